@@ -1,0 +1,88 @@
+# Helper functions shared by every CMakeLists.txt of rockfrac.
+
+# Warnings and sanitizers for one target.
+function(rockfrac_target_options target)
+  target_compile_options(${target} PRIVATE
+    $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+      -Wno-unknown-pragmas>)
+  if(ROCKFRAC_WERROR)
+    target_compile_options(${target} PRIVATE $<$<COMPILE_LANGUAGE:CXX>:-Werror>)
+  endif()
+endfunction()
+
+# Apply sanitizer flags globally (before targets are made).
+if(ROCKFRAC_SANITIZE)
+  add_compile_options(-fsanitize=${ROCKFRAC_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=${ROCKFRAC_SANITIZE})
+endif()
+
+# rockfrac_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+# Creates target rockfrac_<name> with alias rockfrac::<name>; include root is libs/.
+function(rockfrac_add_library name)
+  cmake_parse_arguments(A "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(rockfrac_${name} STATIC ${A_SOURCES})
+  add_library(rockfrac::${name} ALIAS rockfrac_${name})
+  target_include_directories(rockfrac_${name} PUBLIC ${PROJECT_SOURCE_DIR}/libs)
+  target_link_libraries(rockfrac_${name} PUBLIC ${A_PUBLIC_DEPS} PRIVATE ${A_PRIVATE_DEPS})
+  set_target_properties(rockfrac_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  rockfrac_target_options(rockfrac_${name})
+endfunction()
+
+# rockfrac_add_application(<name> SOURCES ... DEPS ...)
+function(rockfrac_add_application name)
+  cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${A_SOURCES})
+  target_link_libraries(${name} PRIVATE ${A_DEPS})
+  rockfrac_target_options(${name})
+endfunction()
+
+# rockfrac_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...])
+# A Catch2 (v2) executable whose test cases run as one ctest entry.
+function(rockfrac_add_unit_test name)
+  cmake_parse_arguments(A "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  if(NOT A_LABELS)
+    set(A_LABELS unit)
+  endif()
+  add_executable(test_${name} ${A_SOURCES})
+  target_link_libraries(test_${name} PRIVATE rockfrac_catch_main Catch2::Catch2 ${A_DEPS})
+  target_compile_definitions(test_${name} PRIVATE
+    ROCKFRAC_SOURCE_DIR="${PROJECT_SOURCE_DIR}" ROCKFRAC_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  set_target_properties(test_${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
+  rockfrac_target_options(test_${name})
+  add_test(NAME ${name} COMMAND test_${name})
+  set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}"
+    ENVIRONMENT "OMP_NUM_THREADS=2;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin")
+endfunction()
+
+# rockfrac_add_case_test(<name> SCRIPT <file.sh> [LABELS ...] [TIMEOUT s])
+# A shell script run with the built applications first on PATH, in a scratch dir.
+function(rockfrac_add_case_test name)
+  cmake_parse_arguments(A "" "SCRIPT;TIMEOUT" "LABELS" ${ARGN})
+  if(NOT A_LABELS)
+    set(A_LABELS case)
+  endif()
+  if(NOT A_TIMEOUT)
+    set(A_TIMEOUT 600)
+  endif()
+  set(work ${PROJECT_BINARY_DIR}/caseTests/${name})
+  add_test(NAME ${name}
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/${A_SCRIPT} ${work})
+  set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}" TIMEOUT ${A_TIMEOUT}
+    ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=2")
+endfunction()
+
+# Add every immediate or nested subdirectory of <dir> that has a CMakeLists.txt,
+# so a new application or test module needs no edit elsewhere.
+function(rockfrac_add_subdirectories dir)
+  if(dir STREQUAL "")
+    set(root ${CMAKE_CURRENT_SOURCE_DIR})
+  else()
+    set(root ${CMAKE_CURRENT_SOURCE_DIR}/${dir})
+  endif()
+  file(GLOB_RECURSE lists CONFIGURE_DEPENDS ${root}/*/CMakeLists.txt)
+  list(SORT lists)
+  foreach(l ${lists})
+    get_filename_component(d ${l} DIRECTORY)
+    add_subdirectory(${d})
+  endforeach()
+endfunction()
