@@ -1,0 +1,173 @@
+// The application shell: option parsing, banner, help, and exit codes.
+#include "core/application.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+
+namespace rockfrac {
+
+namespace {
+
+// Options every application understands (conventions.md §2).
+const std::vector<AppOption>& commonOptions()
+{
+    static const std::vector<AppOption> options = {
+        {"-case", "dir", "case directory (default: the current directory)"},
+        {"-dry-run", "", "read and check every input, run nothing, write nothing"},
+        {"-noFunctionObjects", "", "do not execute the functions of controlDict"},
+        {"-help", "", "print this help and exit"},
+    };
+    return options;
+}
+
+const AppOption* findOption(const std::vector<AppOption>& options, const std::string& name)
+{
+    for (const auto& o : options)
+        if (o.name == name) return &o;
+    return nullptr;
+}
+
+std::string hostName()
+{
+    char buffer[256] = {};
+    if (gethostname(buffer, sizeof(buffer) - 1) != 0) return "unknown";
+    return buffer;
+}
+
+std::string localTime()
+{
+    std::time_t now = std::time(nullptr);
+    char buffer[64] = {};
+    std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+    return buffer;
+}
+
+}  // namespace
+
+Application::Application(const AppInfo& info, int argc, char** argv) : info_(info)
+{
+    for (int i = 1; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word == "-help" || word == "--help" || word == "-h") {
+            help_ = true;
+            continue;
+        }
+        if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1])) &&
+            word[1] != '.') {
+            const AppOption* option = findOption(commonOptions(), word);
+            if (!option) option = findOption(info_.options, word);
+            if (!option)
+                throw UserError("unknown option '" + word + "'; run '" + info_.name +
+                                " -help' for the options it accepts");
+            std::string value;
+            if (!option->argName.empty()) {
+                if (i + 1 >= argc)
+                    throw UserError("option '" + word + "' needs a value <" + option->argName + ">");
+                value = argv[++i];
+            }
+            if (word == "-case")
+                case_ = value;
+            else if (word == "-dry-run")
+                dryRun_ = true;
+            else if (word == "-noFunctionObjects")
+                functionObjects_ = false;
+            else
+                options_[word] = value;
+            continue;
+        }
+        args_.push_back(word);
+    }
+    if (help_) return;
+    if (static_cast<int>(args_.size()) < info_.minArgs || static_cast<int>(args_.size()) > info_.maxArgs) {
+        throw UserError("expected " +
+                        (info_.minArgs == info_.maxArgs
+                             ? std::to_string(info_.minArgs)
+                             : std::to_string(info_.minArgs) + " to " + std::to_string(info_.maxArgs)) +
+                        " argument(s), got " + std::to_string(args_.size()) + "; usage: " + info_.name +
+                        " " + info_.usage);
+    }
+    std::error_code ec;
+    if (!std::filesystem::is_directory(case_, ec))
+        throw UserError("case directory '" + case_.string() +
+                        "' does not exist; give an existing case with -case <dir>");
+}
+
+std::string Application::caseName() const
+{
+    std::error_code ec;
+    auto absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(case_), ec);
+    if (ec) absolute = std::filesystem::absolute(case_);
+    std::string name = absolute.filename().string();
+    if (name.empty() || name == ".") name = absolute.parent_path().filename().string();
+    return name;
+}
+
+std::string Application::option(const std::string& name) const
+{
+    auto it = options_.find(name);
+    if (it == options_.end()) throw UserError("option '" + name + "' is required; see " + info_.name + " -help");
+    return it->second;
+}
+
+std::optional<std::string> Application::optionIf(const std::string& name) const
+{
+    auto it = options_.find(name);
+    if (it == options_.end()) return std::nullopt;
+    return it->second;
+}
+
+void Application::printHelp() const
+{
+    std::cout << "Usage: " << info_.name << " " << info_.usage << "\n\n" << info_.description << "\n\nOptions:\n";
+    auto print = [](const AppOption& o) {
+        std::string left = "  " + o.name + (o.argName.empty() ? "" : " <" + o.argName + ">");
+        if (left.size() < 26) left.resize(26, ' ');
+        std::cout << left << " " << o.help << "\n";
+    };
+    for (const auto& o : info_.options) print(o);
+    for (const auto& o : commonOptions()) print(o);
+    if (!info_.sampleRuns.empty()) {
+        std::cout << "\nSample runs:\n";
+        for (const auto& s : info_.sampleRuns) std::cout << "  " << s << "\n";
+    }
+    std::cout << "\n" << buildString() << "\n";
+}
+
+void Application::printBanner() const
+{
+    std::cout << "/*---------------------------------------------------------------------------*\\\n"
+              << "  " << info_.name << "    " << buildString() << "\n"
+              << "  case:  " << std::filesystem::absolute(case_).lexically_normal().string() << "\n"
+              << "  host:  " << hostName() << "    date: " << localTime() << "\n"
+              << (dryRun_ ? "  mode:  dry run (nothing is written)\n" : "")
+              << "\\*---------------------------------------------------------------------------*/\n"
+              << std::flush;
+}
+
+int runApplication(const AppInfo& info, int argc, char** argv,
+                   const std::function<int(Application&)>& body)
+{
+    try {
+        Application app(info, argc, argv);
+        if (app.helpRequested()) {
+            app.printHelp();
+            return exitSuccess;
+        }
+        if (info.banner) app.printBanner();
+        return body(app);
+    } catch (const UserError& e) {
+        std::cout << std::flush;
+        std::cerr << info.name << ": error: " << e.what() << std::endl;
+        return exitUserError;
+    } catch (const std::exception& e) {
+        std::cout << std::flush;
+        std::cerr << info.name << ": internal error: " << e.what()
+                  << " (this is a bug in rockfrac: please report it with the case)" << std::endl;
+        return exitInternalError;
+    }
+}
+
+}  // namespace rockfrac

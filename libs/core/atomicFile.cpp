@@ -1,0 +1,98 @@
+// Atomic file writes: temporary name beside the target, then rename.
+#include "core/atomicFile.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+fs::path temporaryPathFor(const fs::path& path)
+{
+    // Keep the extension last so that writers choosing a format by extension
+    // (VTK's XML writers do not, but others might) still see the right one.
+    return path.parent_path() / (".tmp." + std::to_string(::getpid()) + "." + path.filename().string());
+}
+
+namespace {
+
+void createParent(const fs::path& path)
+{
+    if (path.parent_path().empty()) return;
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    if (ec)
+        throw UserError("cannot create directory '" + path.parent_path().string() + "': " + ec.message() +
+                        "; check the permissions and free space of the case directory");
+}
+
+void renameOver(const fs::path& from, const fs::path& to)
+{
+    std::error_code ec;
+    fs::rename(from, to, ec);
+    if (ec) {
+        fs::remove(from, ec);
+        throw UserError("cannot write '" + to.string() + "': " + ec.message() +
+                        "; the previous version of the file is kept");
+    }
+}
+
+}  // namespace
+
+void writeFileAtomically(const fs::path& path, const std::function<void(std::ostream&)>& writer)
+{
+    createParent(path);
+    const fs::path tmp = temporaryPathFor(path);
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw UserError("cannot write '" + path.string() + "': " + std::strerror(errno) +
+                            "; check the permissions of its directory");
+        try {
+            writer(out);
+        } catch (...) {
+            out.close();
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            throw;
+        }
+        out.flush();
+        if (!out) {
+            out.close();
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            throw UserError("cannot write '" + path.string() +
+                            "' (disk full or I/O error); the previous version of the file is kept");
+        }
+    }
+    renameOver(tmp, path);
+}
+
+void writeViaTemporary(const fs::path& path, const std::function<bool(const fs::path&)>& writer)
+{
+    createParent(path);
+    const fs::path tmp = temporaryPathFor(path);
+    bool ok = false;
+    try {
+        ok = writer(tmp);
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw;
+    }
+    if (!ok) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw UserError("cannot write '" + path.string() +
+                        "' (disk full, permissions or I/O error); the previous version of the file is kept");
+    }
+    renameOver(tmp, path);
+}
+
+}  // namespace rockfrac
