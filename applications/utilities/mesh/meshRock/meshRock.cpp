@@ -1,0 +1,106 @@
+// meshRock: the specimen of a case, as a watertight surface and (on request) a
+// tetrahedral mesh for feFractureSolver.
+//
+// Reads  system/meshRockDict            (geometry disc | stl | generated)
+//        system/feMeshDict              (optional: tetrahedral mesh via gmsh)
+// Writes constant/triSurface/specimen.stl   the solid the meshes fill
+//        constant/triSurface/scan.stl       the user's scan, transformed (stl only)
+//        constant/geometryProperties        volume, centroid, inertia, extents, hull planes
+//        constant/feMesh/specimen.msh       tetrahedra (with feMeshDict)
+//        VTK/specimen.vtp, VTK/feMesh.vtu   for ParaView
+#include <cstdio>
+#include <iostream>
+
+#include "core/application.hpp"
+#include "core/dictionary.hpp"
+#include "geometry/specimen.hpp"
+#include "geometry/tetMesher.hpp"
+#include "io/vtkOutput.hpp"
+
+using namespace rockfrac;
+namespace fs = std::filesystem;
+
+namespace {
+
+const AppInfo info{
+    "meshRock",
+    "Makes the specimen of a case from system/meshRockDict: a Brazilian disc, a user's STL scan\n"
+    "(checked for holes, transformed, placed on the lower plate; its convex hull is what the\n"
+    "Voronoi mesher fills) or a generated irregular rock of given volume and shape. Writes the\n"
+    "surface, its mass properties, and, when system/feMeshDict exists, a tetrahedral mesh.",
+    "[options]",
+    {"meshRock -case tutorials/BDT/granite", "meshRock -case tutorials/SPB/granite/rock1 -dry-run"},
+    {},
+};
+
+void report(const Specimen& s)
+{
+    const auto& p = s.properties;
+    std::printf("Specimen: %s, volume %.6g m^3 (d_eq %.4g mm)\n", s.source.c_str(), p.volume,
+                1e3 * s.equivalentDiameter());
+    std::printf("  centroid (%.4g %.4g %.4g) m, principal extents %.4g x %.4g x %.4g mm\n", p.centroid.x,
+                p.centroid.y, p.centroid.z, 1e3 * p.principalExtents.x, 1e3 * p.principalExtents.y,
+                1e3 * p.principalExtents.z);
+    std::printf("  principal second moments of volume (%.4g %.4g %.4g) m^5\n", p.principalMoments.x,
+                p.principalMoments.y, p.principalMoments.z);
+    if (s.kind == Specimen::Kind::convexHull)
+        std::printf("  convex hull: %zu planes, %zu triangles%s\n", s.planes.size(), s.surface.triangles.size(),
+                    s.scan ? "" : "");
+    if (s.scan) std::printf("  hull/scan volume ratio %.4f\n", s.hullToScanVolume);
+}
+
+TetMeshRequest readTetRequest(const Dictionary& d)
+{
+    TetMeshRequest r;
+    if (d.found("elementSize")) r.elementSize = d.getScalar("elementSize", Bounds::positive());
+    if (d.found("elementCount")) r.elementCount = d.get<int>("elementCount");
+    if (r.elementSize > 0 && r.elementCount > 0)
+        throw UserError(d.fileName() + ": give either 'elementSize' or 'elementCount', not both");
+    if (!(r.elementSize > 0) && r.elementCount <= 0)
+        throw UserError(d.fileName() + ": missing 'elementSize' [m] or 'elementCount' (> 0)");
+    r.optimise = d.getOrDefault<int>("optimise", 1);
+    return r;
+}
+
+void makeTetMesh(const Application& app, const Specimen& s, const TetMeshRequest& request)
+{
+    const fs::path msh = app.path("constant/feMesh/specimen.msh");
+    const TetMeshingResult mesh = s.kind == Specimen::Kind::disc
+                                      ? meshDiscWithGmsh(s.diameter, s.thickness, s.centre, request, msh)
+                                      : meshSurfaceWithGmsh(s.surface, request, msh);
+    std::vector<double> quality;
+    quality.reserve(mesh.tets.size());
+    for (const auto& t : mesh.tets)
+        quality.push_back(tetQuality(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]));
+    writeTetsVtu(app.path("VTK/feMesh.vtu"), mesh.nodes, mesh.tets, {Field::scalar("quality", quality)}, {}, 0.0);
+    std::printf("Tetrahedral mesh: %zu tets, %zu nodes, element size %.3g mm\n", mesh.tets.size(),
+                mesh.nodes.size(), 1e3 * mesh.elementSize);
+    std::printf("  volume %.6g m^3, error %+.3f %% of the solid; quality min %.3f mean %.3f\n", mesh.volume,
+                100 * mesh.relativeVolumeError(), mesh.minQuality, mesh.meanQuality);
+    std::printf("  written to %s\n", msh.string().c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return runApplication(info, argc, argv, [](Application& app) {
+        const Dictionary dict = Dictionary::readFile(app.path("system/meshRockDict"));
+        const Specimen specimen = buildSpecimen(dict, app.casePath());
+        std::optional<TetMeshRequest> tetRequest;
+        if (fs::exists(app.path("system/feMeshDict")))
+            tetRequest = readTetRequest(Dictionary::readFile(app.path("system/feMeshDict")));
+        report(specimen);
+        if (app.dryRun()) {
+            std::printf("Dry run: inputs are valid, nothing written.\n");
+            return 0;
+        }
+        writeStl(app.path("constant/triSurface/specimen.stl"), specimen.surface, "specimen");
+        if (specimen.scan) writeStl(app.path("constant/triSurface/scan.stl"), *specimen.scan, "scan");
+        writeSpecimen(app.casePath(), specimen);
+        writeTrianglesVtp(app.path("VTK/specimen.vtp"), specimen.surface.points, specimen.surface.triangles, 0.0);
+        if (tetRequest) makeTetMesh(app, specimen, *tetRequest);
+        std::printf("End: specimen written to %s\n", app.path("constant").string().c_str());
+        return 0;
+    });
+}

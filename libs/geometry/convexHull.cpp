@@ -1,0 +1,105 @@
+#include "geometry/convexHull.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "core/random.hpp"
+
+namespace rockfrac {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point3>;
+
+// Merge the planes of coplanar triangles: two triangles belong to the same
+// facet plane when their normals and offsets agree to a relative tolerance.
+std::vector<HalfSpace> distinctPlanes(const TriSurface& surface, double lengthScale)
+{
+    std::vector<HalfSpace> planes;
+    for (const auto& t : surface.triangles) {
+        const Vec3& a = surface.points[t[0]];
+        const Vec3 n = normalised(cross(surface.points[t[1]] - a, surface.points[t[2]] - a));
+        const HalfSpace h{n, dot(n, a)};
+        bool known = false;
+        for (const auto& p : planes)
+            if (norm(p.normal - h.normal) < 1e-9 && std::abs(p.offset - h.offset) < 1e-9 * lengthScale) {
+                known = true;
+                break;
+            }
+        if (!known) planes.push_back(h);
+    }
+    return planes;
+}
+
+}  // namespace
+
+ConvexHull convexHull(const std::vector<Vec3>& points)
+{
+    if (points.size() < 4)
+        throw UserError("a convex hull needs at least 4 points, got " + std::to_string(points.size()));
+    std::vector<Point3> cgalPoints;
+    cgalPoints.reserve(points.size());
+    for (const auto& p : points) cgalPoints.emplace_back(p.x, p.y, p.z);
+
+    Mesh mesh;
+    CGAL::convex_hull_3(cgalPoints.begin(), cgalPoints.end(), mesh);
+    if (mesh.number_of_faces() < 4)
+        throw UserError("the points are (nearly) coplanar: their convex hull has no volume");
+
+    ConvexHull hull;
+    std::map<Mesh::Vertex_index, int> ids;
+    for (auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        ids[v] = static_cast<int>(hull.surface.points.size());
+        hull.surface.points.push_back({p.x(), p.y(), p.z()});
+    }
+    // convex_hull_3 yields triangles when every face has three vertices;
+    // triangulate fans defensively in case a face has more.
+    for (auto f : mesh.faces()) {
+        std::vector<int> loop;
+        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) loop.push_back(ids[v]);
+        for (std::size_t k = 1; k + 1 < loop.size(); ++k) hull.surface.triangles.push_back({loop[0], loop[k], loop[k + 1]});
+    }
+    const MassProperties props = massProperties(hull.surface);
+    if (!(props.volume > 0)) throw UserError("the convex hull of the points has no volume (coplanar points)");
+    const double lengthScale = std::cbrt(props.volume);
+    hull.planes = distinctPlanes(hull.surface, lengthScale);
+    return hull;
+}
+
+ConvexHull generateRock(const RockShape& shape)
+{
+    if (!(shape.volume > 0)) throw UserError("rock volume must be positive");
+    if (!(shape.elongation > 0 && shape.elongation <= 1) || !(shape.flatness > 0 && shape.flatness <= 1))
+        throw UserError("elongation (b/a) and flatness (c/b) must be in (0, 1]");
+    if (shape.nPoints < 8) throw UserError("a generated rock needs at least 8 hull points");
+
+    SplitMix64 random(shape.seed);
+    const double a = 1.0, b = shape.elongation, c = shape.elongation * shape.flatness;
+    std::vector<Vec3> points;
+    points.reserve(static_cast<std::size_t>(shape.nPoints));
+    for (int i = 0; i < shape.nPoints; ++i) {
+        // Uniform direction on the sphere (Archimedes: z uniform, azimuth uniform).
+        const double z = random.uniform(-1.0, 1.0);
+        const double phi = random.uniform(0.0, 2 * M_PI);
+        const double rxy = std::sqrt(std::max(0.0, 1 - z * z));
+        const double radius = 1.0 + shape.roughness * random.uniform(-1.0, 1.0);
+        points.push_back({a * radius * rxy * std::cos(phi), b * radius * rxy * std::sin(phi), c * radius * z});
+    }
+    ConvexHull hull = convexHull(points);
+    const MassProperties props = massProperties(hull.surface);
+    const double scale = std::cbrt(shape.volume / props.volume);
+    // Scale about the centroid and place the centroid at the origin.
+    transformSurface(hull.surface, scale, Mat3::identity(), -scale * props.centroid);
+    for (auto& p : hull.planes) p.offset = scale * (p.offset - dot(p.normal, props.centroid));
+    return hull;
+}
+
+}  // namespace rockfrac

@@ -1,0 +1,230 @@
+#include "geometry/specimen.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/atomicFile.hpp"
+#include "core/dictionary.hpp"
+#include "core/error.hpp"
+#include "io/foamFile.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+double Specimen::equivalentDiameter() const { return std::cbrt(6.0 * properties.volume / M_PI); }
+
+namespace {
+
+// Exact mass properties of a solid cylinder with its axis along y.
+MassProperties discProperties(double diameter, double thickness, const Vec3& centre)
+{
+    const double r = 0.5 * diameter, t = thickness;
+    MassProperties p;
+    p.volume = M_PI * r * r * t;
+    p.centroid = centre;
+    const double axial = 0.5 * p.volume * r * r;                       // about y
+    const double transverse = p.volume * (3 * r * r + t * t) / 12.0;  // about x and z
+    p.inertia(0, 0) = transverse;
+    p.inertia(1, 1) = axial;
+    p.inertia(2, 2) = transverse;
+    symmetricEigen(p.inertia, p.principalMoments, p.principalAxes);
+    p.boundsMin = centre - Vec3{r, 0.5 * t, r};
+    p.boundsMax = centre + Vec3{r, 0.5 * t, r};
+    p.principalExtents = {diameter, diameter, t};
+    return p;
+}
+
+// Rest a rock on its flattest side: largest principal extent along x, smallest
+// along z, centroid above the origin, lowest point on the plate z = 0.
+Mat3 restingRotation(const MassProperties& props)
+{
+    // Principal moments ascending: the axis of the smallest moment is the
+    // longest direction of the body, that of the largest the shortest one.
+    Mat3 R;
+    for (int j = 0; j < 3; ++j) {
+        R(0, j) = props.principalAxes(j, 0);
+        R(1, j) = props.principalAxes(j, 1);
+        R(2, j) = props.principalAxes(j, 2);
+    }
+    // Keep it a proper rotation (det = +1).
+    const Vec3 r0{R(0, 0), R(0, 1), R(0, 2)}, r1{R(1, 0), R(1, 1), R(1, 2)};
+    const Vec3 r2 = cross(r0, r1);
+    R(2, 0) = r2.x;
+    R(2, 1) = r2.y;
+    R(2, 2) = r2.z;
+    return R;
+}
+
+void placeOnPlate(TriSurface& surface, std::optional<TriSurface>& scan)
+{
+    const MassProperties props = massProperties(surface);
+    const Mat3 R = restingRotation(props);
+    transformSurface(surface, 1.0, R, -(R * props.centroid));
+    if (scan) transformSurface(*scan, 1.0, R, -(R * props.centroid));
+    double zMin = 1e300;
+    for (const auto& p : surface.points) zMin = std::min(zMin, p.z);
+    const Vec3 lift{0, 0, -zMin};
+    transformSurface(surface, 1.0, Mat3::identity(), lift);
+    if (scan) transformSurface(*scan, 1.0, Mat3::identity(), lift);
+}
+
+Specimen fromHull(ConvexHull hull, const std::string& source)
+{
+    Specimen s;
+    s.kind = Specimen::Kind::convexHull;
+    s.source = source;
+    s.surface = std::move(hull.surface);
+    s.planes = std::move(hull.planes);
+    return s;
+}
+
+// Recompute the hull planes and properties after the surface has moved.
+void finishHull(Specimen& s)
+{
+    s.planes = convexHull(s.surface.points).planes;
+    s.properties = massProperties(s.surface);
+}
+
+Specimen buildDisc(const Dictionary& d)
+{
+    Specimen s;
+    s.kind = Specimen::Kind::disc;
+    s.source = "disc";
+    s.diameter = d.getScalar("diameter", Bounds::positive());
+    s.thickness = d.getScalar("thickness", Bounds::positive());
+    s.centre = d.getOrDefault<Vec3>("centre", Vec3{});
+    const int nSegments = d.getOrDefault<int>("nSegments", 128);
+    if (nSegments < 8)
+        throw UserError(d.fileName() + ": disc/nSegments = " + std::to_string(nSegments) +
+                        " is too coarse; expected at least 8 facets around the disc");
+    s.surface = discSurface(s.diameter, s.thickness, s.centre, nSegments);
+    s.properties = discProperties(s.diameter, s.thickness, s.centre);
+    return s;
+}
+
+Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
+{
+    const std::string fileName = d.get<std::string>("file");
+    const fs::path file = fs::path(fileName).is_absolute() ? fs::path(fileName) : caseDir / fileName;
+    TriSurface scan = readStl(file);
+    const SurfaceCheck check = checkSurface(scan);
+    if (!check.watertight())
+        throw UserError(file.string() + ": the scan is not a closed surface (" + check.reason() +
+                        "); repair it (e.g. close holes in MeshLab) and export it again");
+    const double scale = d.getScalarOrDefault("scale", 1.0, Bounds::positive());
+    const Mat3 rotation = rotationFromDegrees(d.getOrDefault<Vec3>("rotate", Vec3{}));
+    const Vec3 translation = d.getOrDefault<Vec3>("translate", Vec3{});
+    transformSurface(scan, scale, rotation, translation);
+    const double scanVolume = massProperties(scan).volume;
+    if (!(scanVolume > 0))
+        throw UserError(file.string() + ": the scan encloses no volume (inward-facing triangles?); "
+                                        "flip its normals and export it again");
+    Specimen s = fromHull(convexHull(scan.points), "stl");
+    s.scan = std::move(scan);
+    if (d.getOrDefault<bool>("placeOnPlate", false)) placeOnPlate(s.surface, s.scan);
+    finishHull(s);
+    s.hullToScanVolume = s.properties.volume / scanVolume;
+    return s;
+}
+
+Specimen buildGenerated(const Dictionary& d)
+{
+    RockShape shape;
+    shape.volume = d.getScalar("volume", Bounds::positive());
+    shape.elongation = d.getScalarOrDefault("elongation", shape.elongation, Bounds::open(0, 1.000001));
+    shape.flatness = d.getScalarOrDefault("flatness", shape.flatness, Bounds::open(0, 1.000001));
+    shape.roughness = d.getScalarOrDefault("roughness", shape.roughness, Bounds::closedOpen(0, 1));
+    shape.nPoints = d.getOrDefault<int>("nPoints", shape.nPoints);
+    shape.seed = d.get<std::uint64_t>("seed");
+    Specimen s = fromHull(generateRock(shape), "generated");
+    std::optional<TriSurface> noScan;
+    if (d.getOrDefault<bool>("placeOnPlate", true)) placeOnPlate(s.surface, noScan);
+    finishHull(s);
+    return s;
+}
+
+}  // namespace
+
+Specimen buildSpecimen(const Dictionary& dict, const fs::path& caseDir)
+{
+    const std::string kind = dict.getWord("geometry", {"disc", "stl", "generated"});
+    if (kind == "disc") return buildDisc(dict.subDict("disc"));
+    if (kind == "stl") return buildFromStl(dict.subDict("stl"), caseDir);
+    return buildGenerated(dict.subDict("generated"));
+}
+
+void writeSpecimen(const fs::path& caseDir, const Specimen& s)
+{
+    writeFileAtomically(caseDir / "constant" / "geometryProperties", [&](std::ostream& out) {
+        out << foamFileHeader("geometryProperties", "The specimen made by meshRock (SI units).");
+        out << entryLine("type", s.kind == Specimen::Kind::disc ? "disc" : "convexHull");
+        out << entryLine("source", s.source);
+        out << entryLine("surface", "\"constant/triSurface/specimen.stl\"");
+        out << entryLine("volume", numberText(s.properties.volume));
+        out << entryLine("equivalentDiameter", numberText(s.equivalentDiameter()));
+        out << entryLine("centroid", vectorText(s.properties.centroid));
+        out << "// second moment of volume about the centroid [m^5]; times density = inertia\n";
+        out << entryLine("inertia", tensorText(s.properties.inertia));
+        out << entryLine("principalExtents", vectorText(s.properties.principalExtents));
+        out << entryLine("boundsMin", vectorText(s.properties.boundsMin));
+        out << entryLine("boundsMax", vectorText(s.properties.boundsMax));
+        if (s.kind == Specimen::Kind::disc) {
+            out << "\ndisc\n{\n";
+            out << entryLine("diameter", numberText(s.diameter), 1);
+            out << entryLine("thickness", numberText(s.thickness), 1);
+            out << entryLine("centre", vectorText(s.centre), 1);
+            out << entryLine("axis", "(0 1 0)", 1);
+            out << "}\n";
+        } else {
+            out << "\nconvexHull\n{\n";
+            out << entryLine("hullToScanVolume", numberText(s.hullToScanVolume), 1);
+            out << "    // half-spaces n.x <= c as (nx ny nz c)\n    planes " << s.planes.size() << "\n    (\n";
+            for (const auto& p : s.planes)
+                out << "        (" << numberText(p.normal.x) << " " << numberText(p.normal.y) << " "
+                    << numberText(p.normal.z) << " " << numberText(p.offset) << ")\n";
+            out << "    );\n}\n";
+        }
+    });
+}
+
+Specimen readSpecimen(const fs::path& caseDir)
+{
+    const fs::path file = caseDir / "constant" / "geometryProperties";
+    if (!fs::exists(file))
+        throw UserError("missing " + file.string() + "; run meshRock first to make the specimen");
+    const Dictionary d = Dictionary::readFile(file);
+    Specimen s;
+    const std::string type = d.getWord("type", {"disc", "convexHull"});
+    s.source = d.getOrDefault<std::string>("source", type);
+    s.properties.volume = d.getScalar("volume", Bounds::positive());
+    s.properties.centroid = d.get<Vec3>("centroid");
+    const auto inertia = d.get<std::vector<double>>("inertia");
+    if (inertia.size() != 9) throw UserError(file.string() + ": 'inertia' needs 9 values");
+    for (int k = 0; k < 9; ++k) s.properties.inertia(k / 3, k % 3) = inertia[k];
+    symmetricEigen(s.properties.inertia, s.properties.principalMoments, s.properties.principalAxes);
+    s.properties.principalExtents = d.get<Vec3>("principalExtents");
+    s.properties.boundsMin = d.get<Vec3>("boundsMin");
+    s.properties.boundsMax = d.get<Vec3>("boundsMax");
+    if (type == "disc") {
+        s.kind = Specimen::Kind::disc;
+        const Dictionary& disc = d.subDict("disc");
+        s.diameter = disc.getScalar("diameter", Bounds::positive());
+        s.thickness = disc.getScalar("thickness", Bounds::positive());
+        s.centre = disc.get<Vec3>("centre");
+    } else {
+        s.kind = Specimen::Kind::convexHull;
+        const Dictionary& hull = d.subDict("convexHull");
+        s.hullToScanVolume = hull.getOrDefault<double>("hullToScanVolume", 1.0);
+        for (const auto& row : hull.get<std::vector<std::vector<double>>>("planes")) {
+            if (row.size() != 4) throw UserError(file.string() + ": each plane needs 4 values (nx ny nz c)");
+            s.planes.push_back({normalised(Vec3{row[0], row[1], row[2]}), row[3]});
+        }
+        if (s.planes.size() < 4) throw UserError(file.string() + ": a convex hull needs at least 4 planes");
+    }
+    const fs::path surfaceFile = caseDir / "constant" / "triSurface" / "specimen.stl";
+    if (fs::exists(surfaceFile)) s.surface = readStl(surfaceFile);
+    return s;
+}
+
+}  // namespace rockfrac

@@ -1,0 +1,185 @@
+#include "geometry/tetMesher.hpp"
+
+#include <gmsh.h>
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "core/atomicFile.hpp"
+#include "core/error.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+double tetQuality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+    const double volume = std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
+    const double sumL2 = norm2(b - a) + norm2(c - a) + norm2(d - a) + norm2(c - b) + norm2(d - b) + norm2(d - c);
+    return sumL2 > 0 ? 12.0 * std::pow(3.0 * volume, 2.0 / 3.0) / sumL2 : 0.0;
+}
+
+namespace {
+
+// gmsh is a process-wide singleton: one session at a time, always finalised.
+class GmshSession {
+public:
+    GmshSession()
+    {
+        mutex().lock();
+        gmsh::initialize();
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.NumThreads", 1);  // reproducible meshes
+        gmsh::model::add("rockfrac");
+    }
+    ~GmshSession()
+    {
+        gmsh::finalize();
+        mutex().unlock();
+    }
+    GmshSession(const GmshSession&) = delete;
+    GmshSession& operator=(const GmshSession&) = delete;
+
+private:
+    static std::mutex& mutex()
+    {
+        static std::mutex m;
+        return m;
+    }
+};
+
+double sizeForCount(double volume, int count)
+{
+    // A regular tetrahedron of edge h has volume h³/(6√2); gmsh meshes are
+    // less regular, so this first guess is corrected once by the count obtained.
+    return std::cbrt(6.0 * std::sqrt(2.0) * volume / count);
+}
+
+void setSize(double h)
+{
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * h);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+}
+
+// Extract nodes and linear tets of the current model, renumbered from 0.
+TetMeshingResult extractMesh()
+{
+    TetMeshingResult result;
+    std::vector<std::size_t> nodeTags;
+    std::vector<double> coords, parametric;
+    gmsh::model::mesh::getNodes(nodeTags, coords, parametric, -1, -1, false, false);
+    std::map<std::size_t, int> index;
+    for (std::size_t i = 0; i < nodeTags.size(); ++i) {
+        index[nodeTags[i]] = static_cast<int>(i);
+        result.nodes.push_back({coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]});
+    }
+    std::vector<std::size_t> elementTags, elementNodes;
+    gmsh::model::mesh::getElementsByType(4, elementTags, elementNodes);  // 4 = 4-node tetrahedron
+    double qualitySum = 0;
+    result.minQuality = 1.0;
+    for (std::size_t e = 0; e < elementTags.size(); ++e) {
+        std::array<int, 4> t;
+        for (int k = 0; k < 4; ++k) t[k] = index.at(elementNodes[4 * e + k]);
+        const Vec3 &a = result.nodes[t[0]], &b = result.nodes[t[1]], &c = result.nodes[t[2]],
+                   &d = result.nodes[t[3]];
+        double v = dot(b - a, cross(c - a, d - a)) / 6.0;
+        if (v < 0) {
+            std::swap(t[2], t[3]);
+            v = -v;
+        }
+        result.volume += v;
+        const double q = tetQuality(a, b, c, d);
+        qualitySum += q;
+        result.minQuality = std::min(result.minQuality, q);
+        result.tets.push_back(t);
+    }
+    result.meanQuality = result.tets.empty() ? 0 : qualitySum / result.tets.size();
+    return result;
+}
+
+template <class BuildGeometry>
+TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request, const fs::path& mshFile,
+                              BuildGeometry build)
+{
+    if (!(request.elementSize > 0) && request.elementCount <= 0)
+        throw UserError("a tetrahedral mesh needs 'elementSize' (> 0) or 'elementCount' (> 0)");
+    double h = request.elementSize > 0 ? request.elementSize : sizeForCount(solidVolume, request.elementCount);
+    TetMeshingResult result;
+    const int passes = (request.elementSize > 0) ? 1 : 2;
+    for (int pass = 0; pass < passes; ++pass) {
+        GmshSession session;
+        build();
+        setSize(h);
+        gmsh::option::setNumber("Mesh.Optimize", request.optimise > 0 ? 1 : 0);
+        gmsh::model::mesh::generate(3);
+        result = extractMesh();
+        if (result.tets.empty()) throw UserError("gmsh produced no tetrahedra; check that the surface is closed");
+        if (pass + 1 < passes) {
+            h *= std::cbrt(static_cast<double>(result.tets.size()) / request.elementCount);
+            continue;
+        }
+        writeViaTemporary(mshFile, [](const fs::path& tmp) {
+            // gmsh chooses the format from the extension: keep ".msh" last.
+            const fs::path named = tmp.parent_path() / (tmp.filename().string() + ".msh");
+            gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+            gmsh::write(named.string());
+            std::error_code ec;
+            fs::rename(named, tmp, ec);
+            return !ec;
+        });
+    }
+    result.elementSize = h;
+    result.solidVolume = solidVolume;
+    return result;
+}
+
+}  // namespace
+
+TetMeshingResult meshDiscWithGmsh(double diameter, double thickness, const Vec3& centre,
+                                  const TetMeshRequest& request, const fs::path& mshFile)
+{
+    const double solidVolume = M_PI * 0.25 * diameter * diameter * thickness;
+    return meshWithGmsh(solidVolume, request, mshFile, [&] {
+        gmsh::model::occ::addCylinder(centre.x, centre.y - 0.5 * thickness, centre.z, 0, thickness, 0,
+                                      0.5 * diameter);
+        gmsh::model::occ::synchronize();
+    });
+}
+
+TetMeshingResult meshSurfaceWithGmsh(const TriSurface& surface, const TetMeshRequest& request,
+                                     const fs::path& mshFile)
+{
+    const double solidVolume = massProperties(surface).volume;
+    return meshWithGmsh(solidVolume, request, mshFile, [&] {
+        // Hand the triangles to gmsh as a discrete surface, split it into
+        // patches at sharp edges (> 40°), rebuild a geometry on them and fill it.
+        const int surfaceTag = gmsh::model::addDiscreteEntity(2);
+        std::vector<std::size_t> nodeTags(surface.points.size());
+        std::vector<double> coords;
+        for (std::size_t i = 0; i < surface.points.size(); ++i) {
+            nodeTags[i] = i + 1;
+            coords.insert(coords.end(), {surface.points[i].x, surface.points[i].y, surface.points[i].z});
+        }
+        gmsh::model::mesh::addNodes(2, surfaceTag, nodeTags, coords);
+        std::vector<std::size_t> triangleTags, triangleNodes;
+        for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+            triangleTags.push_back(t + 1);
+            for (int k = 0; k < 3; ++k) triangleNodes.push_back(surface.triangles[t][k] + 1);
+        }
+        gmsh::model::mesh::addElementsByType(surfaceTag, 2, triangleTags, triangleNodes);
+        gmsh::model::mesh::classifySurfaces(40.0 * M_PI / 180.0, true, false, M_PI);
+        gmsh::model::mesh::createGeometry();
+        std::vector<std::pair<int, int>> surfaces;
+        gmsh::model::getEntities(surfaces, 2);
+        std::vector<int> surfaceTags;
+        for (const auto& s : surfaces) surfaceTags.push_back(s.second);
+        const int loop = gmsh::model::geo::addSurfaceLoop(surfaceTags);
+        gmsh::model::geo::addVolume({loop});
+        gmsh::model::geo::synchronize();
+    });
+}
+
+}  // namespace rockfrac
