@@ -3,15 +3,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/halfSpace.hpp"
 #include "geometry/triSurface.hpp"
 
 namespace rockfrac {
-
-// Half-space normal·x <= offset, normal of unit length, pointing out of the solid.
-struct HalfSpace {
-    Vec3 normal;
-    double offset = 0.0;
-};
 
 struct ConvexHull {
     TriSurface surface;            // triangulated hull, outward oriented

@@ -1,0 +1,138 @@
+// voronoiMesh: fill the specimen with bonded Voronoi cells.
+//
+// Reads  constant/geometryProperties    (meshRock: disc or convex hull)
+//        system/voronoiMeshDict         (nCells or mesoConstant, pruningDistance, seed)
+// Writes constant/voronoiMesh/          cells, faces and bonds (docs/file-formats.md)
+//        VTK/voronoiMesh.vtu            cells (id, volume, neighbours) for ParaView
+//        VTK/bonds.vtp                  one line per bond, along the face normal
+#include <cmath>
+#include <cstdio>
+
+#include "core/application.hpp"
+#include "core/dictionary.hpp"
+#include "geometry/specimen.hpp"
+#include "io/vtkOutput.hpp"
+#include "voronoi/seeding.hpp"
+#include "voronoi/tessellation.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
+
+using namespace rockfrac;
+namespace fs = std::filesystem;
+
+namespace {
+
+const AppInfo info{
+    "voronoiMesh",
+    "Fills the specimen made by meshRock with Voronoi cells bonded at their face vertices:\n"
+    "nCells seeds (or V/mesoConstant) placed at random no closer than the pruning distance,\n"
+    "tessellated by Voro++ and clipped to the disc or the rock's convex hull; one bond per\n"
+    "vertex of every internal face, carrying A/n of the face area.",
+    "[options]",
+    {"voronoiMesh -case tutorials/BDT/granite", "voronoiMesh -case tutorials/SPB/granite/rock1 -dry-run"},
+    {},
+};
+
+struct MeshRequest {
+    int nCells = 0;
+    double pruningDistance = 0;
+    std::uint64_t seed = 0;
+    double dilationFraction = 0.1;
+};
+
+MeshRequest readRequest(const Dictionary& d, double domainVolume)
+{
+    MeshRequest r;
+    if (d.found("nCells") == d.found("mesoConstant"))
+        throw UserError(d.fileName() + ": give exactly one of 'nCells' (a count) or 'mesoConstant' " +
+                        "(volume per cell [m^3], e.g. 2.2e-7)");
+    if (d.found("nCells")) {
+        r.nCells = d.get<int>("nCells");
+    } else {
+        r.nCells = cellCountFromMesoConstant(domainVolume, d.getScalar("mesoConstant", Bounds::positive()));
+    }
+    if (r.nCells < 2)
+        throw UserError(d.fileName() + ": " + std::to_string(r.nCells) +
+                        " cell(s) requested; a bonded mesh needs at least 2 cells");
+    r.pruningDistance = d.getScalar("pruningDistance", Bounds::nonNegative());
+    r.seed = d.get<std::uint64_t>("seed");
+    r.dilationFraction = d.getScalarOrDefault("dilationFraction", 0.1, Bounds::open(0, 0.5));
+    return r;
+}
+
+Domain domainOf(const Specimen& s)
+{
+    if (s.kind == Specimen::Kind::disc) return Domain::disc(s.centre, {0, 1, 0}, s.diameter, s.thickness);
+    return Domain::fromPlanes(s.planes);
+}
+
+void writeVtk(const Application& app, const VoronoiMesh& mesh)
+{
+    // Cells: every cell lists its own vertices (cells do not share points).
+    PolyhedronSet cells;
+    cells.points = mesh.vertices;
+    cells.cellFaceOffset = mesh.cellFaceOffset;
+    cells.faceVertexOffset = mesh.faceVertexOffset;
+    cells.faceVertices.resize(mesh.faceVertices.size());
+    std::vector<double> neighbours(mesh.nCells());
+    std::vector<int> ids(mesh.nCells());
+    for (int c = 0; c < mesh.nCells(); ++c) {
+        ids[c] = c;
+        for (int f = mesh.cellFaceOffset[c]; f < mesh.cellFaceOffset[c + 1]; ++f) {
+            if (mesh.faceNeighbour[f] >= 0) neighbours[c] += 1;
+            for (int k = mesh.faceVertexOffset[f]; k < mesh.faceVertexOffset[f + 1]; ++k)
+                cells.faceVertices[k] = mesh.cellVertexOffset[c] + mesh.faceVertices[k];
+        }
+    }
+    writePolyhedraVtu(app.path("VTK/voronoiMesh.vtu"), cells,
+                      {Field::integer("cellId", ids), Field::scalar("volume", mesh.volumes),
+                       Field::scalar("neighbours", neighbours)},
+                      0.0);
+
+    // Bonds: a segment through the bond point along the face normal, from the
+    // plane of cell I's centroid to that of cell J's (length l_i + l_j).
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 2>> lines;
+    std::vector<double> area, length;
+    for (const auto& b : mesh.bonds) {
+        const int first = static_cast<int>(points.size());
+        points.push_back(b.point - b.lI * b.normalI);
+        points.push_back(b.point + b.lJ * b.normalI);
+        lines.push_back({first, first + 1});
+        area.push_back(b.area);
+        length.push_back(b.lI + b.lJ);
+    }
+    writeLinesVtp(app.path("VTK/bonds.vtp"), points, lines,
+                  {Field::scalar("area", area), Field::scalar("length", length)}, {}, 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return runApplication(info, argc, argv, [](Application& app) {
+        const Specimen specimen = readSpecimen(app.casePath());
+        const Dictionary dict = Dictionary::readFile(app.path("system/voronoiMeshDict"));
+        const Domain domain = domainOf(specimen);
+        const MeshRequest request = readRequest(dict, domain.volume());
+        std::printf("Seeding %d cells, pruning distance %.4g mm, seed %llu, domain volume %.6g m^3\n",
+                    request.nCells, 1e3 * request.pruningDistance,
+                    static_cast<unsigned long long>(request.seed), domain.volume());
+        const VoronoiMesh mesh = generateVoronoiMesh(domain, request.nCells, request.pruningDistance,
+                                                     request.seed, request.dilationFraction);
+        double volume = 0;
+        for (double v : mesh.volumes) volume += v;
+        const double volumeError = (volume - domain.volume()) / domain.volume();
+        std::printf("voronoiMesh: %d cells, mean size %.4g mm, %d bonds, volume error %+.3g %%, "
+                    "meso constant %.4g m^3, dilation radius %.4g mm\n",
+                    mesh.nCells(), 1e3 * meanCellSize(mesh), mesh.nBonds(), 100 * volumeError,
+                    volume / mesh.nCells(), 1e3 * mesh.dilationRadius);
+        if (app.dryRun()) {
+            std::printf("Dry run: nothing written.\n");
+            return 0;
+        }
+        writeVoronoiMesh(app.path("constant/voronoiMesh"), mesh);
+        writeVtk(app, mesh);
+        std::printf("End: written constant/voronoiMesh, VTK/voronoiMesh.vtu, VTK/bonds.vtp\n");
+        return 0;
+    });
+}
