@@ -1,0 +1,130 @@
+// Tessellation invariants: volumes add up to the domain, cells are closed
+// convex polyhedra sharing faces pairwise, bonds are one per face vertex, and
+// the mesh depends on nothing but its inputs (seed, thread count).
+#include <omp.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "voronoi/polyhedron.hpp"
+#include "voronoi/tessellation.hpp"
+#include "voronoiTestSupport.hpp"
+
+using namespace rockfrac;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+void checkInvariants(const VoronoiMesh& mesh)
+{
+    const double length = meanCellSize(mesh);
+    CHECK(test::checkSharedFaces(mesh, length) == "");
+    CHECK(test::checkClosedConvexCells(mesh, length) == "");
+    CHECK(test::checkBonds(mesh) == "");
+}
+
+// Restores the OpenMP thread count when a test ends.
+struct ThreadCount {
+    explicit ThreadCount(int n) : saved(omp_get_max_threads()) { omp_set_num_threads(n); }
+    ~ThreadCount() { omp_set_num_threads(saved); }
+    int saved;
+};
+
+}  // namespace
+
+TEST_CASE("cell volumes of a box and of rock hulls add up to the domain volume", "[voronoi][tessellation]")
+{
+    const Domain box = Domain::box({0.01, -0.02, 0.0}, {0.05, 0.03, 0.02});
+    const Domain rock = test::randomConvexRock(20, 7, 0.03, {0.1, 0.2, -0.05});
+    const Domain smallRock = test::rockOfVolume(82.7e-6, 101);
+    for (const Domain* domain : {&box, &rock, &smallRock}) {
+        const VoronoiMesh mesh = generateVoronoiMesh(*domain, 400, 0.0, 5);
+        CHECK(std::fabs(test::sumOfVolumes(mesh) / domain->volume() - 1.0) < 1e-9);
+        CHECK(mesh.domainVolume == domain->volume());
+        checkInvariants(mesh);
+        CHECK(test::checkBoundaryFacesOnPlanes(mesh, *domain, meanCellSize(mesh)) == "");
+    }
+}
+
+TEST_CASE("the 300-cell BDT disc keeps pi r^2 t within 0.5 %", "[voronoi][tessellation]")
+{
+    const Domain disc = test::bdtDisc();
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const VoronoiMesh mesh = generateVoronoiMesh(disc, 300, 2.5e-3, seed);
+        const double exact = pi * 22.4e-3 * 22.4e-3 * 13.8e-3;
+        CHECK(std::fabs(test::sumOfVolumes(mesh) / exact - 1.0) < 0.005);
+        checkInvariants(mesh);
+        // Mean volume-equivalent diameter: the paper quotes 5.5 mm.
+        CHECK(meanCellSize(mesh) == Approx(5.1e-3).epsilon(0.03));
+        CHECK(mesh.dilationRadius == Approx(0.1 * meanCellSize(mesh)));
+        CHECK(mesh.seed == seed);
+        CHECK(mesh.pruningDistance == 2.5e-3);
+    }
+}
+
+TEST_CASE("cells carry correct volume, centroid and inertia", "[voronoi][tessellation]")
+{
+    // Two seeds in a 2 x 1 x 1 box split it into two unit cubes.
+    const Domain box = Domain::box({0, 0, 0}, {2, 1, 1});
+    const VoronoiMesh mesh = tessellate(box, {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}});
+    REQUIRE(mesh.nCells() == 2);
+    CHECK(mesh.volumes[0] == Approx(1.0).epsilon(1e-14));
+    CHECK(mesh.centroids[1].x == Approx(1.5).epsilon(1e-14));
+    // Unit cube: J = (1/6) I about its centre, no products of inertia.
+    CHECK(mesh.inertia[0].m[0][0] == Approx(1.0 / 6.0).epsilon(1e-13));
+    CHECK(mesh.inertia[1].m[2][2] == Approx(1.0 / 6.0).epsilon(1e-13));
+    CHECK(std::fabs(mesh.inertia[0].m[0][1]) < 1e-14);
+    // One shared square face: four bonds of area 1/4, l = 1/2 on each side.
+    REQUIRE(mesh.nBonds() == 4);
+    CHECK(mesh.bonds[0].area == Approx(0.25).epsilon(1e-14));
+    CHECK(mesh.bonds[0].normalI.x == Approx(1.0).epsilon(1e-14));
+    CHECK(mesh.bonds[0].lI == Approx(0.5).epsilon(1e-14));
+    CHECK(mesh.bonds[0].lJ == Approx(0.5).epsilon(1e-14));
+    CHECK(mesh.bonds[0].point.x == Approx(1.0).epsilon(1e-14));
+}
+
+TEST_CASE("inertia tensors of irregular cells are physical", "[voronoi][tessellation]")
+{
+    // Symmetric, positive diagonal, and J_xx + J_yy >= J_zz (true of any body).
+    const Domain rock = test::randomConvexRock(20, 3);
+    const VoronoiMesh mesh = generateVoronoiMesh(rock, 30, 0.0, 9);
+    const double total = test::sumOfVolumes(mesh);
+    for (int c = 0; c < mesh.nCells(); ++c) {
+        const Mat3& J = mesh.inertia[c];
+        CHECK(J.m[0][1] == Approx(J.m[1][0]).margin(1e-15));      // symmetric
+        CHECK(J.m[0][0] + J.m[1][1] >= J.m[2][2] * (1 - 1e-12));  // triangle inequality of principal moments
+        CHECK(J.m[0][0] > 0);
+    }
+    CHECK(total == Approx(rock.volume()).epsilon(1e-9));
+}
+
+TEST_CASE("the mesh is reproducible from its seed and independent of threads", "[voronoi][tessellation]")
+{
+    const Domain disc = test::bdtDisc();
+    const VoronoiMesh first = generateVoronoiMesh(disc, 300, 2.5e-3, 11);
+    CHECK(test::identical(first, generateVoronoiMesh(disc, 300, 2.5e-3, 11)));
+    CHECK_FALSE(test::identical(first, generateVoronoiMesh(disc, 300, 2.5e-3, 12)));
+
+    const Domain block = Domain::box({0, 0, 0}, {1, 1, 1});
+    VoronoiMesh oneThread, twoThreads;
+    {
+        ThreadCount threads(1);
+        oneThread = generateVoronoiMesh(block, 3000, 0.02, 3);
+    }
+    {
+        ThreadCount threads(2);
+        twoThreads = generateVoronoiMesh(block, 3000, 0.02, 3);
+    }
+    CHECK(test::identical(oneThread, twoThreads));
+    checkInvariants(twoThreads);
+    CHECK(test::checkBoundaryFacesOnPlanes(twoThreads, block, meanCellSize(twoThreads)) == "");
+}
+
+TEST_CASE("seeds outside the domain are refused", "[voronoi][tessellation]")
+{
+    const Domain box = Domain::box({0, 0, 0}, {1, 1, 1});
+    CHECK_THROWS_AS(tessellate(box, {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}}), UserError);
+    CHECK_THROWS_AS(tessellate(box, {}), UserError);
+}
