@@ -9,18 +9,11 @@
 #include <optional>
 #include <vector>
 
+#include "core/halfSpace.hpp"
 #include "core/vec3.hpp"
 
 namespace rockfrac {
 
-// The closed half-space normal . x <= offset, with a unit outward normal.
-struct HalfSpace {
-    Vec3 normal;
-    double offset = 0.0;
-
-    // Signed distance of p from the plane, positive outside.
-    double signedDistance(const Vec3& p) const { return dot(normal, p) - offset; }
-};
 
 // An infinite circular cylinder: points within `radius` of the axis line.
 struct Cylinder {

@@ -55,9 +55,9 @@ Vec3 faceCentre(const PolyhedronView& poly, int f)
     return sum / poly.faceSize(f);
 }
 
-MassProperties massProperties(const PolyhedronView& poly)
+CellMassProperties massProperties(const PolyhedronView& poly)
 {
-    MassProperties result;
+    CellMassProperties result;
 
     // Volume and centroid from tetrahedra (apex, a, b, c): the centroid of a
     // tetrahedron is the mean of its four corners.

@@ -29,7 +29,7 @@ Vec3 faceAreaVector(const PolyhedronView& poly, int f);
 // Mean of the vertices of face f: a point on the face plane.
 Vec3 faceCentre(const PolyhedronView& poly, int f);
 
-struct MassProperties {
+struct CellMassProperties {
     double volume = 0.0;  // [m^3]
     Vec3 centroid;        // centre of volume [m]
     // Inertia tensor per unit density about the centroid,
@@ -41,6 +41,6 @@ struct MassProperties {
 // exact up to round-off: the solid is split into tetrahedra (a reference
 // point, then the centroid, and a triangle fan of each face) whose moments
 // have closed forms.
-MassProperties massProperties(const PolyhedronView& poly);
+CellMassProperties massProperties(const PolyhedronView& poly);
 
 }  // namespace rockfrac

@@ -41,7 +41,7 @@ struct CellResult {
     std::vector<int> neighbours;  // seed index or boundaryFace
     std::vector<Vec3> faceNormal;
     std::vector<double> faceArea;
-    MassProperties mass;
+    CellMassProperties mass;
 };
 
 void checkSeedsInside(const Domain& domain, const std::vector<Vec3>& seeds)

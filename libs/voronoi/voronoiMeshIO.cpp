@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomicFile.hpp"
 #include "core/error.hpp"
 #include "voronoi/meshTopology.hpp"
 
@@ -41,29 +42,11 @@ std::string displayName(const fs::path& caseDir, const char* file)
     throw UserError(file + ": " + what + "; " + rerunAdvice);
 }
 
-// Write `bytes` to `path` atomically: a temporary name beside it (so the
-// rename stays on one file system), then rename over the target.
-// TODO: use core/atomicFile.hpp's writeFileAtomically once it is implemented.
-void writeAtomically(const fs::path& path, const std::string& label, const char* data, std::size_t size)
+// Write `bytes` to `path` atomically (core/atomicFile.hpp): a reader never
+// sees a half-written mesh file.
+void writeAtomically(const fs::path& path, const std::string& /*label*/, const char* data, std::size_t size)
 {
-    const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(data, static_cast<std::streamsize>(size));
-        out.close();
-        if (!out) {
-            const std::string reason = std::strerror(errno);
-            std::error_code ignored;
-            fs::remove(tmp, ignored);
-            throw UserError(label + ": cannot write (" + reason + "); check disk space and permissions");
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw UserError(label + ": cannot replace the file (" + ec.message() + "); check permissions");
-    }
+    writeFileAtomically(path, [&](std::ostream& out) { out.write(data, static_cast<std::streamsize>(size)); });
 }
 
 Bytes readWholeFile(const fs::path& path, const std::string& label)

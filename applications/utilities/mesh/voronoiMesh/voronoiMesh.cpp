@@ -130,7 +130,7 @@ int main(int argc, char** argv)
             std::printf("Dry run: nothing written.\n");
             return 0;
         }
-        writeVoronoiMesh(app.path("constant/voronoiMesh"), mesh);
+        writeVoronoiMesh(app.casePath(), mesh);
         writeVtk(app, mesh);
         std::printf("End: written constant/voronoiMesh, VTK/voronoiMesh.vtu, VTK/bonds.vtp\n");
         return 0;
