@@ -22,8 +22,9 @@ struct TextEntry {
     std::string keyword;
     SourceLocation keywordLocation;
     std::size_t keywordBegin = 0, keywordEnd = 0;
-    std::size_t valueBegin = 0, valueEnd = 0;  // value tokens; empty at the ';' of `keyword;`
-    std::size_t terminatorEnd = 0;             // just after the ';' or the closing '}'
+    std::size_t dimensionsBegin = std::string::npos;  // a dimension set before the value, if any
+    std::size_t valueBegin = 0, valueEnd = 0;         // value tokens; empty at the ';' of `keyword;`
+    std::size_t terminatorEnd = 0;                    // just after the ';' or the closing '}'
     int valueColumn = 0;
     std::unique_ptr<TextDictionary> dict;
 };
@@ -129,6 +130,10 @@ private:
                 if (first) entry.valueBegin = entry.valueEnd = token.begin;
                 entry.terminatorEnd = token.end;
                 return;
+            }
+            if (first && token.kind == TokenKind::dimensions && entry.dimensionsBegin == std::string::npos) {
+                entry.dimensionsBegin = token.begin;  // kept when only the value changes
+                continue;
             }
             if (first) entry.valueBegin = token.begin, entry.valueColumn = token.where.column;
             first = false;
@@ -334,8 +339,13 @@ std::string replaceValue(const std::string& text, const TextEntry& entry, const 
         return commented.substr(0, entry.keywordEnd) + " " + valueText + terminator +
                commented.substr(entry.terminatorEnd);
     }
-    const std::string spacing = entry.valueBegin == entry.valueEnd ? " " : "";
-    return commented.substr(0, entry.valueBegin) + spacing + valueText + commented.substr(entry.valueEnd);
+    // A new value with its own dimension set replaces the old set too.
+    const bool newDimensions = valueText.find_first_not_of(" \t") != std::string::npos &&
+                               valueText[valueText.find_first_not_of(" \t")] == '[';
+    const bool hasDimensions = entry.dimensionsBegin != std::string::npos;
+    const std::size_t begin = newDimensions && hasDimensions ? entry.dimensionsBegin : entry.valueBegin;
+    const std::string spacing = entry.valueBegin == entry.valueEnd && begin == entry.valueBegin ? " " : "";
+    return commented.substr(0, begin) + spacing + valueText + commented.substr(entry.valueEnd);
 }
 
 }  // namespace

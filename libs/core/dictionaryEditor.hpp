@@ -7,6 +7,7 @@
 // its path are created. The editor works on the text as written, so it edits
 // what the file itself says, never what an #include brought in.
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rockfrac {
@@ -30,7 +31,14 @@ std::string removeEntry(const std::string& text, const std::string& keyPath, con
 // Whether the text itself (not an #include) has the entry.
 bool hasTextEntry(const std::string& text, const std::string& keyPath, const std::string& fileName);
 
-// File versions: read, edit, check that the result still parses, write atomically.
+// Read `path`, apply `edit` (text, file name) -> new text, check that the
+// result still reads as a dictionary, then write it atomically (unless
+// `checkOnly`). `description` says what the edit was in error messages.
+using DictionaryTextEdit = std::function<std::string(const std::string& text, const std::string& fileName)>;
+void editDictionaryFile(const std::filesystem::path& path, const DictionaryTextEdit& edit,
+                        const std::string& description, bool checkOnly = false);
+
+// File versions of setEntry and removeEntry.
 void setEntryInFile(const std::filesystem::path& path, const std::string& keyPath,
                     const std::string& newValueText, const std::string& comment = "");
 void removeEntryInFile(const std::filesystem::path& path, const std::string& keyPath);

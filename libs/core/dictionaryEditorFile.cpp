@@ -11,43 +11,52 @@ namespace rockfrac {
 
 namespace {
 
-std::string readWholeFile(const std::filesystem::path& path)
+std::string readWholeFile(const std::filesystem::path& path, const std::string& shownName)
 {
-    std::ifstream in(path, std::ios::binary);
     std::error_code ec;
-    if (!in || !std::filesystem::is_regular_file(path, ec))
-        throw UserError(path.string() + ": cannot read the file; expected an existing dictionary file");
+    std::ifstream in;
+    if (std::filesystem::is_regular_file(path, ec)) in.open(path, std::ios::binary);
+    if (!in.is_open())
+        throw UserError(shownName + ": cannot read the file; expected an existing dictionary file");
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
 }
 
+}  // namespace
+
 // The edited text must still read as a dictionary before it replaces the
 // file: an edit never leaves a case that its applications cannot read.
-void checkAndWrite(const std::filesystem::path& path, const std::string& text, const std::string& edit)
+void editDictionaryFile(const std::filesystem::path& path, const DictionaryTextEdit& edit,
+                        const std::string& description, bool checkOnly)
 {
+    const std::string name = path.lexically_normal().string();
+    const std::string edited = edit(readWholeFile(path, name), name);
     try {
-        (void)Dictionary::parse(text, path.lexically_normal().string());
+        (void)Dictionary::parse(edited, name);
     } catch (const UserError& error) {
-        throw UserError(std::string(error.what()) + " (after " + edit + "; the file was not changed)");
+        throw UserError(std::string(error.what()) + " (after " + description + "; the file was not changed)");
     }
-    writeFileAtomically(path, [&text](std::ostream& out) { out << text; });
+    if (!checkOnly) writeFileAtomically(path, [&edited](std::ostream& out) { out << edited; });
 }
-
-}  // namespace
 
 void setEntryInFile(const std::filesystem::path& path, const std::string& keyPath,
                     const std::string& newValueText, const std::string& comment)
 {
-    const std::string name = path.lexically_normal().string();
-    const std::string edited = setEntry(readWholeFile(path), keyPath, newValueText, name, comment);
-    checkAndWrite(path, edited, "setting '" + keyPath + "' to '" + newValueText + "'");
+    editDictionaryFile(
+        path,
+        [&](const std::string& text, const std::string& name) {
+            return setEntry(text, keyPath, newValueText, name, comment);
+        },
+        "setting '" + keyPath + "' to '" + newValueText + "'");
 }
 
 void removeEntryInFile(const std::filesystem::path& path, const std::string& keyPath)
 {
-    const std::string name = path.lexically_normal().string();
-    checkAndWrite(path, removeEntry(readWholeFile(path), keyPath, name), "removing '" + keyPath + "'");
+    editDictionaryFile(
+        path,
+        [&](const std::string& text, const std::string& name) { return removeEntry(text, keyPath, name); },
+        "removing '" + keyPath + "'");
 }
 
 }  // namespace rockfrac

@@ -176,3 +176,10 @@ TEST_CASE("setEntryInFile writes atomically and refuses edits that break the fil
                    std::string("    shearStrength   (30e6 5e6);\n").size());
     CHECK(readText(file) == expected);
 }
+
+TEST_CASE("setting a value keeps its dimension set unless a new one is given", "[dictionary][editor]")
+{
+    CHECK(setEntry("E   [Pa] 77e9; // granite\n", "E", "80e9", "r") == "E   [Pa] 80e9; // granite\n");
+    CHECK(setEntry("E   [Pa] 77e9;\n", "E", "[kg/m/s^2] 80e9", "r") == "E   [kg/m/s^2] 80e9;\n");
+    CHECK(setEntry("E   77e9;\n", "E", "[Pa] 80e9", "r") == "E   [Pa] 80e9;\n");
+}
