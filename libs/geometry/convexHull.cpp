@@ -4,6 +4,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -53,20 +55,39 @@ ConvexHull convexHull(const std::vector<Vec3>& points)
     if (mesh.number_of_faces() < 4)
         throw UserError("the points are (nearly) coplanar: their convex hull has no volume");
 
-    ConvexHull hull;
+    // Canonical output, independent of CGAL's internal order: points sorted
+    // lexicographically, each triangle starting at its smallest index, the
+    // triangles sorted. The same points then give the same hull, bit for bit.
+    std::vector<Vec3> hullPoints;
     std::map<Mesh::Vertex_index, int> ids;
     for (auto v : mesh.vertices()) {
         const auto& p = mesh.point(v);
-        ids[v] = static_cast<int>(hull.surface.points.size());
-        hull.surface.points.push_back({p.x(), p.y(), p.z()});
+        ids[v] = static_cast<int>(hullPoints.size());
+        hullPoints.push_back({p.x(), p.y(), p.z()});
     }
-    // convex_hull_3 yields triangles when every face has three vertices;
-    // triangulate fans defensively in case a face has more.
+    std::vector<int> order(hullPoints.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    auto less = [](const Vec3& a, const Vec3& b) {
+        return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+    };
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return less(hullPoints[a], hullPoints[b]); });
+    std::vector<int> rank(order.size());
+    ConvexHull hull;
+    for (std::size_t r = 0; r < order.size(); ++r) {
+        rank[order[r]] = static_cast<int>(r);
+        hull.surface.points.push_back(hullPoints[order[r]]);
+    }
     for (auto f : mesh.faces()) {
         std::vector<int> loop;
-        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) loop.push_back(ids[v]);
-        for (std::size_t k = 1; k + 1 < loop.size(); ++k) hull.surface.triangles.push_back({loop[0], loop[k], loop[k + 1]});
+        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) loop.push_back(rank[ids[v]]);
+        // convex_hull_3 yields triangles; fan-triangulate defensively otherwise.
+        for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+            std::array<int, 3> t{loop[0], loop[k], loop[k + 1]};
+            std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+            hull.surface.triangles.push_back(t);
+        }
     }
+    std::sort(hull.surface.triangles.begin(), hull.surface.triangles.end());
     const MassProperties props = massProperties(hull.surface);
     if (!(props.volume > 0)) throw UserError("the convex hull of the points has no volume (coplanar points)");
     const double lengthScale = std::cbrt(props.volume);

@@ -154,30 +154,29 @@ TetMeshingResult meshSurfaceWithGmsh(const TriSurface& surface, const TetMeshReq
 {
     const double solidVolume = massProperties(surface).volume;
     return meshWithGmsh(solidVolume, request, mshFile, [&] {
-        // Hand the triangles to gmsh as a discrete surface, split it into
-        // patches at sharp edges (> 40°), rebuild a geometry on them and fill it.
-        const int surfaceTag = gmsh::model::addDiscreteEntity(2);
-        std::vector<std::size_t> nodeTags(surface.points.size());
-        std::vector<double> coords;
-        for (std::size_t i = 0; i < surface.points.size(); ++i) {
-            nodeTags[i] = i + 1;
-            coords.insert(coords.end(), {surface.points[i].x, surface.points[i].y, surface.points[i].z});
-        }
-        gmsh::model::mesh::addNodes(2, surfaceTag, nodeTags, coords);
-        std::vector<std::size_t> triangleTags, triangleNodes;
-        for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-            triangleTags.push_back(t + 1);
-            for (int k = 0; k < 3; ++k) triangleNodes.push_back(surface.triangles[t][k] + 1);
-        }
-        gmsh::model::mesh::addElementsByType(surfaceTag, 2, triangleTags, triangleNodes);
-        gmsh::model::mesh::classifySurfaces(40.0 * M_PI / 180.0, true, false, M_PI);
-        gmsh::model::mesh::createGeometry();
-        std::vector<std::pair<int, int>> surfaces;
-        gmsh::model::getEntities(surfaces, 2);
+        // Every triangle becomes a plane surface of gmsh's built-in kernel,
+        // bounded by lines shared with its neighbours, so the surface mesh is
+        // conforming and the volume is exactly the solid's (flat facets). A
+        // scan with very many small triangles should be decimated first: the
+        // mesh cannot be coarser than its triangles.
+        std::vector<int> pointTags(surface.points.size());
+        for (std::size_t i = 0; i < surface.points.size(); ++i)
+            pointTags[i] = gmsh::model::geo::addPoint(surface.points[i].x, surface.points[i].y, surface.points[i].z);
+        std::map<std::pair<int, int>, int> lineOf;  // (a, b) with a < b -> line tag from a to b
+        auto edge = [&](int a, int b) {
+            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+            auto it = lineOf.find(key);
+            if (it == lineOf.end())
+                it = lineOf.emplace(key, gmsh::model::geo::addLine(pointTags[key.first], pointTags[key.second])).first;
+            return a < b ? it->second : -it->second;
+        };
         std::vector<int> surfaceTags;
-        for (const auto& s : surfaces) surfaceTags.push_back(s.second);
-        const int loop = gmsh::model::geo::addSurfaceLoop(surfaceTags);
-        gmsh::model::geo::addVolume({loop});
+        for (const auto& t : surface.triangles) {
+            const int loop = gmsh::model::geo::addCurveLoop({edge(t[0], t[1]), edge(t[1], t[2]), edge(t[2], t[0])});
+            surfaceTags.push_back(gmsh::model::geo::addPlaneSurface({loop}));
+        }
+        const int shell = gmsh::model::geo::addSurfaceLoop(surfaceTags);
+        gmsh::model::geo::addVolume({shell});
         gmsh::model::geo::synchronize();
     });
 }

@@ -128,15 +128,15 @@ TriSurface readStl(const fs::path& file)
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.empty()) throw UserError(file.string() + ": empty file; expected an ASCII or binary STL surface");
 
-    // ASCII files start with "solid" and contain "facet"; binary headers may
-    // also start with "solid", so the size check of the binary layout decides.
+    // ASCII files start with "solid" and contain "facet"; some binary headers
+    // also start with "solid", so a file whose size matches the binary layout
+    // exactly, or that has no "facet" keyword, is read as binary.
     bool binary = true;
     if (bytes.compare(0, 5, "solid") == 0) {
         std::uint32_t count = 0;
         if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, 4);
         const bool sizeMatchesBinary = bytes.size() >= 84 && bytes.size() == 84ull + 50ull * count;
-        binary = sizeMatchesBinary && bytes.find("facet") == std::string::npos;
-        if (!sizeMatchesBinary) binary = false;
+        binary = sizeMatchesBinary || bytes.find("facet") == std::string::npos;
     }
     TriSurface surface = binary ? readBinaryStl(bytes, file) : readAsciiStl(bytes, file);
     if (surface.triangles.empty())
