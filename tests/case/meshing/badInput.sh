@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Bad input to meshRock and voronoiMesh: exit code 1, one clear line, nothing changed.
 source "$(dirname "$0")/../caseTestFunctions"
-cp -r "$src/tutorials/BDT/granite" "$work/disc"
+copyTutorial tutorials/BDT/granite "$work/disc"
 cd "$work/disc"
 
-expectUserError "meshRockDict" meshRock -case "$work/nonexistent"   # missing case dir
+expectUserError "does not exist" meshRock -case "$work/nonexistent"   # missing case dir
 mkdir -p "$work/empty/system"
 expectUserError "meshRockDict" meshRock -case "$work/empty"          # missing dictionary
 

@@ -2,7 +2,7 @@
 # The BDT tutorial meshes: disc surface, Voronoi cells and bonds; the VTK files
 # are read back by VTK's readers (checkVtk) and their counts and volumes checked.
 source "$(dirname "$0")/../caseTestFunctions"
-cp -r "$src/tutorials/BDT/granite" "$work/case"
+copyTutorial tutorials/BDT/granite "$work/case"
 cd "$work/case"
 ./Allrun
 grep -q "voronoiMesh: 300 cells" log.voronoiMesh || fail "expected 300 cells: $(tail -3 log.voronoiMesh)"

@@ -5,7 +5,7 @@ declare -A expected=(
   [granite]="376 312 206 339 211 372 198"
   [limestone]="353 280 381 408 243 349 298")
 for rock in granite limestone; do
-    cp -r "$src/tutorials/SPB/$rock" "$work/$rock"
+    copyTutorial "tutorials/SPB/$rock" "$work/$rock"
     "$work/$rock/Allrun" > "$work/$rock.log"
     i=1
     for n in ${expected[$rock]}; do
