@@ -17,15 +17,15 @@ namespace rockfrac {
 
 // Bond constants shared by every bond of a run.
 struct BondMaterial {
-    double normal_modulus = 0.0;     // k_n = E(1-nu)/((1+nu)(1-2nu))  (Eq. 7) [Pa]
-    double shear_modulus = 0.0;      // k_t = E/(2(1+nu))  (Eq. 8) [Pa]
-    double tensile_strength = 0.0;   // sigma-bar [Pa]
-    double cohesion = 0.0;           // C [Pa]
-    double friction = 0.0;           // mu [-]
-    double fracture_energy_I = 0.0;  // G_I [N/m]
-    double fracture_energy_II = 0.0; // G_II [N/m]
-    double bk_exponent = 2.0;        // eta [-]
-    double rupture_tolerance = 0.0;  // Remark 1.1, relative to d_e0
+    double normal_modulus = 0.0;      // k_n = E(1-nu)/((1+nu)(1-2nu))  (Eq. 7) [Pa]
+    double shear_modulus = 0.0;       // k_t = E/(2(1+nu))  (Eq. 8) [Pa]
+    double tensile_strength = 0.0;    // sigma-bar [Pa]
+    double cohesion = 0.0;            // C [Pa]
+    double friction = 0.0;            // mu [-]
+    double fracture_energy_I = 0.0;   // G_I [N/m]
+    double fracture_energy_II = 0.0;  // G_II [N/m]
+    double bk_exponent = 2.0;         // eta [-]
+    double rupture_tolerance = 0.0;   // Remark 1.1, relative to d_e0
 };
 
 // Life of a bond: elastic ("init" = true in Algorithm 1), softening, broken (D = 1).
@@ -43,9 +43,9 @@ struct BondHistory {
 
 // Kinematics of one bond, in world coordinates.
 struct BondInput {
-    Vec3 opening;            // d = x_j - x_i of the two anchor points [m]
-    Vec3 normal;             // n = (n_i - n_j)/|n_i - n_j|, pointing from cell i to cell j
-    Vec3 relative_velocity;  // velocity of anchor j minus that of anchor i [m/s]
+    Vec3 opening;                   // d = x_j - x_i of the two anchor points [m]
+    Vec3 normal;                    // n = (n_i - n_j)/|n_i - n_j|, pointing from cell i to cell j
+    Vec3 relative_velocity;         // velocity of anchor j minus that of anchor i [m/s]
     double reference_length = 0.0;  // l_ij = l_i + l_j [m]
     double bond_area = 0.0;         // A/n [m^2]
     double damping_beta = 0.0;      // beta of Eqs. 18–19 in seconds (already converted) [s]
@@ -89,9 +89,9 @@ struct BondKernelArgs {
     const double* bond_area = nullptr;
     const double* damping_beta = nullptr;  // per interface, seconds
     int* intact_bonds = nullptr;
-    Vec3* force_on_i = nullptr;  // sum over the interface's bonds
-    Vec3* torque_on_i = nullptr; // about cell i's centroid
-    Vec3* torque_on_j = nullptr; // about cell j's centroid
+    Vec3* force_on_i = nullptr;   // sum over the interface's bonds
+    Vec3* torque_on_i = nullptr;  // about cell i's centroid
+    Vec3* torque_on_j = nullptr;  // about cell j's centroid
     // Bonds.
     const Vec3* anchor_i_body = nullptr;
     const Vec3* anchor_j_body = nullptr;
@@ -180,7 +180,8 @@ void runBondKernel(const BondKernelArgs& a)
 #pragma omp parallel for schedule(static)
     for (int block = 0; block < n_blocks; ++block) {
         BondBlockSums sums;
-        const int end = a.n_interfaces < (block + 1) * a.block_size ? a.n_interfaces : (block + 1) * a.block_size;
+        const int end =
+            a.n_interfaces < (block + 1) * a.block_size ? a.n_interfaces : (block + 1) * a.block_size;
         for (int k = block * a.block_size; k < end; ++k) bondInterfaceKernel<Law>(a, k, sums);
         a.block_sums[block] = sums;
     }

@@ -1,9 +1,8 @@
 #include "dem/cellCore.hpp"
 
-#include <voro++.hh>
-
 #include <algorithm>
 #include <cmath>
+#include <voro++.hh>
 
 namespace rockfrac {
 
@@ -41,15 +40,17 @@ ErodedCore erodeConvexCell(const std::vector<Vec3>& cell_vertices, const std::ve
             return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
     }
     // A core thinner than 1e-6 of the cell is degenerate for GJK and inertia alike.
-    if (cell.volume() < 1e-18 || cell.p < 4) return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
+    if (cell.volume() < 1e-18 || cell.p < 4)
+        return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
     std::vector<double> coordinates;
     cell.vertices(coordinates);
     ErodedCore core;
     for (std::size_t i = 0; i + 2 < coordinates.size(); i += 3) {
         const Vec3 v{coordinates[i] * size, coordinates[i + 1] * size, coordinates[i + 2] * size};
         // Voro++ can return coincident vertices at degenerate corners; keep one.
-        const bool duplicate = std::any_of(core.vertices.begin(), core.vertices.end(),
-                                           [&](const Vec3& u) { return norm2(u - v) <= 1e-24 * size * size; });
+        const bool duplicate = std::any_of(core.vertices.begin(), core.vertices.end(), [&](const Vec3& u) {
+            return norm2(u - v) <= 1e-24 * size * size;
+        });
         if (!duplicate) core.vertices.push_back(v);
     }
     return core;

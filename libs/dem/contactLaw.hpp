@@ -24,9 +24,9 @@ struct ContactConstants {
 };
 
 struct ContactInput {
-    double overlap = 0.0;       // delta > 0 [m]
-    Vec3 normal;                // unit, from body A (or the wall) to body B (the cell)
-    Vec3 relative_velocity;     // velocity of B minus that of A at the contact point [m/s]
+    double overlap = 0.0;           // delta > 0 [m]
+    Vec3 normal;                    // unit, from body A (or the wall) to body B (the cell)
+    Vec3 relative_velocity;         // velocity of B minus that of A at the contact point [m/s]
     double effective_radius = 0.0;  // R* [m]
     double effective_mass = 0.0;    // m* [kg]
     double dt = 0.0;                // time step, for the tangential spring increment [s]
@@ -89,7 +89,8 @@ RF_HD inline void clearItem(const ContactItemOutputs& o, int item)
     o.status[item] = contactNone;
 }
 
-RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const ContactOutput& out, unsigned char status)
+RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const ContactOutput& out,
+                            unsigned char status)
 {
     o.elastic_energy[item] = out.elastic_energy;
     o.damping_power[item] = out.damping_power;
@@ -121,8 +122,8 @@ struct ContactGeometry {
 
 // Overlap along a fixed normal from the support points of the two cores: used
 // when the cores themselves intersect and GJK has no separating direction.
-RF_HD inline ContactGeometry supportGeometry(const ConvexVertexSet& A, const ConvexVertexSet& B, const Vec3& normal,
-                                             double radius_a, double radius_b)
+RF_HD inline ContactGeometry supportGeometry(const ConvexVertexSet& A, const ConvexVertexSet& B,
+                                             const Vec3& normal, double radius_a, double radius_b)
 {
     ContactGeometry g;
     const Vec3 point_a = supportPoint(A, normal);
@@ -190,7 +191,7 @@ struct WallPose {
     Mat3 rotation = Mat3::identity();
     Vec3 velocity;
     Vec3 angular_velocity;
-    Vec3 normal;  // plates: unit normal into the domain (world)
+    Vec3 normal;             // plates: unit normal into the domain (world)
     int first_triangle = 0;  // tri surfaces: triangles [first, first + n) of the vertex array
     int n_triangles = 0;
 };
@@ -226,8 +227,8 @@ RF_HD inline ContactGeometry plateGeometry(const ConvexVertexSet& core, double r
 
 // Triangulated surface: GJK between the core and each candidate triangle; the
 // nearest triangle makes the contact (one contact per cell and surface).
-RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core, double radius,
-                                                const WallPose& wall, int item)
+RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
+                                                double radius, const WallPose& wall, int item)
 {
     ContactGeometry best;
     best.overlap = -1e300;
@@ -256,8 +257,8 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     a.wall_power[item] = 0.0;
     const ConvexVertexSet core = cellCore(a.cells, c);
     const double radius = a.cells.dilation_radius[c];
-    const ContactGeometry g =
-        wall.kind == wallPlate ? plateGeometry(core, radius, wall) : triSurfaceGeometry(a, core, radius, wall, item);
+    const ContactGeometry g = wall.kind == wallPlate ? plateGeometry(core, radius, wall)
+                                                     : triSurfaceGeometry(a, core, radius, wall, item);
     if (!(g.overlap > 0.0)) return clearItem(a.items, item);
     a.items.last_normal[item] = g.normal;
     const Vec3 wall_velocity = wall.velocity + cross(wall.angular_velocity, g.point - wall.origin);

@@ -1,7 +1,6 @@
 #include "dem/demModel.hpp"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -18,7 +17,8 @@ constexpr double pi = 3.14159265358979323846;
 constexpr int cell_block_size = 512;
 
 // Hertz–Mindlin constants of a material pairing (physics.md §3.3).
-ContactConstants contactConstants(double E1, double nu1, double E2, double nu2, double friction, double restitution)
+ContactConstants contactConstants(double E1, double nu1, double E2, double nu2, double friction,
+                                  double restitution)
 {
     ContactConstants k;
     k.effective_modulus = 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
@@ -118,7 +118,7 @@ DemModel::DemModel(const VoronoiMesh& mesh, const DemParameters& parameters) : p
     buildIncidence();
     refreshKinematicCaches();
     computeForces(0.0);
-    measureCells();
+    measureCells(0.0);
     initial_balance_ = energies_.balance();
 }
 
@@ -131,9 +131,12 @@ void DemModel::buildCells(const VoronoiMesh& mesh)
     if (static_cast<int>(mesh.centroids.size()) != n || static_cast<int>(mesh.inertia.size()) != n ||
         static_cast<int>(mesh.cellFaceOffset.size()) != n + 1 ||
         static_cast<int>(mesh.cellVertexOffset.size()) != n + 1)
-        throw UserError("the Voronoi mesh is incomplete: centroids, inertia, vertices and faces are needed per cell");
-    const double dilation = parameters_.dilation_radius > 0.0 ? parameters_.dilation_radius : mesh.dilationRadius;
-    if (!(dilation > 0.0)) throw UserError("the dilation radius is zero: set it in the mesh or the DEM parameters");
+        throw UserError(
+            "the Voronoi mesh is incomplete: centroids, inertia, vertices and faces are needed per cell");
+    const double dilation =
+        parameters_.dilation_radius > 0.0 ? parameters_.dilation_radius : mesh.dilationRadius;
+    if (!(dilation > 0.0))
+        throw UserError("the dilation radius is zero: set it in the mesh or the DEM parameters");
     skin_ = parameters_.skin_distance > 0.0 ? parameters_.skin_distance : dilation;
 
     CellArrays& c = cells_;
@@ -214,10 +217,12 @@ void DemModel::buildBonds(const VoronoiMesh& mesh)
         const VoronoiBond& head = mesh.bonds[order[first]];
         const bool swapped = head.cellI > head.cellJ;
         const int ci = swapped ? head.cellJ : head.cellI, cj = swapped ? head.cellI : head.cellJ;
-        if (ci == cj || ci < 0 || cj >= mesh.nCells()) throw UserError("the Voronoi mesh has an invalid bond");
+        if (ci == cj || ci < 0 || cj >= mesh.nCells())
+            throw UserError("the Voronoi mesh has an invalid bond");
         // Outward normals of each cell's face (cell J's face normal from the mesh when known).
         const Vec3 normal_I = head.normalI;
-        const Vec3 normal_J = head.faceJ >= 0 && head.faceJ < mesh.nFaces() ? mesh.faceNormal[head.faceJ] : -normal_I;
+        const Vec3 normal_J =
+            head.faceJ >= 0 && head.faceJ < mesh.nFaces() ? mesh.faceNormal[head.faceJ] : -normal_I;
         const Mat3 Ri = rotationMatrix(cells_.orientation[ci]);
         const Mat3 Rj = rotationMatrix(cells_.orientation[cj]);
         f.cell_i.push_back(ci);
@@ -303,8 +308,8 @@ int DemModel::addPlate(const Vec3& point, const Vec3& normal_into_domain, const 
     return nWalls() - 1;
 }
 
-int DemModel::addTriSurface(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles,
-                            const WallMotion& motion)
+int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
+                            const std::vector<std::array<int, 3>>& triangles, const WallMotion& motion)
 {
     if (triangles.empty()) throw UserError("a triangulated wall needs at least one triangle");
     WallState w;
@@ -383,10 +388,12 @@ bool DemModel::neighbourListsStale() const
     double wall_move = 0.0;
     for (int w = 0; w < nWalls(); ++w) {
         double extent = 0.0;
-        for (int t = 3 * walls_[w].first_triangle; t < 3 * (walls_[w].first_triangle + walls_[w].n_triangles); ++t)
+        for (int t = 3 * walls_[w].first_triangle; t < 3 * (walls_[w].first_triangle + walls_[w].n_triangles);
+             ++t)
             extent = std::max(extent, norm(triangle_vertices_[t]));
-        wall_move = std::max(wall_move, norm(walls_[w].origin - wall_origin_at_build_[w]) +
-                                            extent * rotationAngle(walls_[w].orientation, wall_orientation_at_build_[w]));
+        wall_move = std::max(
+            wall_move, norm(walls_[w].origin - wall_origin_at_build_[w]) +
+                           extent * rotationAngle(walls_[w].orientation, wall_orientation_at_build_[w]));
     }
     return cell_move > 0.5 * skin_ || cell_move + wall_move > skin_ || !(cell_move == cell_move);
 }
@@ -394,7 +401,8 @@ bool DemModel::neighbourListsStale() const
 void DemModel::rebuildNeighbourLists()
 {
     const int n = cells_.size();
-    const std::vector<std::pair<int, int>> near = findNearPairs(cells_.position, cells_.bounding_radius, skin_);
+    const std::vector<std::pair<int, int>> near =
+        findNearPairs(cells_.position, cells_.bounding_radius, skin_);
     ContactPairArrays next;
     next.cell_a.reserve(near.size());
     std::size_t old = 0;
@@ -405,10 +413,11 @@ void DemModel::rebuildNeighbourLists()
         const auto begin = neighbour_cell_.begin() + neighbour_offset_[a];
         const auto end = neighbour_cell_.begin() + neighbour_offset_[a + 1];
         const auto found = std::lower_bound(begin, end, b);
-        next.interface.push_back(found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()]
-                                                             : -1);
+        next.interface.push_back(
+            found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1);
         // Carry the contact history by key (both lists sorted by (a, b)).
-        while (old < pairs_.cell_a.size() && std::make_pair(pairs_.cell_a[old], pairs_.cell_b[old]) < std::make_pair(a, b))
+        while (old < pairs_.cell_a.size() &&
+               std::make_pair(pairs_.cell_a[old], pairs_.cell_b[old]) < std::make_pair(a, b))
             ++old;
         const bool kept = old < pairs_.cell_a.size() && pairs_.cell_a[old] == a && pairs_.cell_b[old] == b;
         next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
@@ -464,7 +473,8 @@ void DemModel::buildWallItems()
             while (old < wall_items_.cell.size() &&
                    std::make_pair(wall_items_.cell[old], wall_items_.wall[old]) < std::make_pair(c, w))
                 ++old;
-            const bool kept = old < wall_items_.cell.size() && wall_items_.cell[old] == c && wall_items_.wall[old] == w;
+            const bool kept =
+                old < wall_items_.cell.size() && wall_items_.cell[old] == c && wall_items_.wall[old] == w;
             next.tangential_spring.push_back(kept ? wall_items_.tangential_spring[old] : Vec3{});
             next.last_normal.push_back(kept ? wall_items_.last_normal[old] : Vec3{});
         }
@@ -634,7 +644,8 @@ void DemModel::runContactKernels(double dt)
     energies_.contact_elastic = 0.0;
     counters_.core_intersections = 0;
     counters_.contacts_active = sumContactEnergies(pairs_, dt, energies_, counters_.core_intersections);
-    counters_.wall_contacts_active = sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
+    counters_.wall_contacts_active =
+        sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
     for (int w = 0; w < nWalls(); ++w) walls_[w].reaction = Vec3{};
     for (int i = 0; i < wall_items_.size(); ++i) {
         walls_[wall_items_.wall[i]].reaction -= wall_items_.force_on_cell[i];
@@ -693,7 +704,7 @@ void DemModel::computeForces(double dt)
 void DemModel::evaluateForces(double dt)
 {
     computeForces(dt);
-    measureCells();
+    measureCells(0.0);
 }
 
 // ---- Integration ----------------------------------------------------------------
@@ -740,13 +751,13 @@ void DemModel::kick(double dt)
         cells_.velocity[c] += (0.5 * dt / cells_.mass[c]) * cells_.force[c];
         const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
         const Vec3 inertia = cells_.principal_inertia[c];
-        cells_.angular_velocity[c] += dt * Vec3{torque_body.x / inertia.x, torque_body.y / inertia.y,
-                                                torque_body.z / inertia.z};
+        cells_.angular_velocity[c] +=
+            dt * Vec3{torque_body.x / inertia.x, torque_body.y / inertia.y, torque_body.z / inertia.z};
     }
 }
 
 // Kinetic energy and the finiteness check, summed per block in a fixed order.
-void DemModel::measureCells()
+void DemModel::measureCells(double sync_dt)
 {
     const int n = cells_.size();
     const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
@@ -755,9 +766,16 @@ void DemModel::measureCells()
     for (int block = 0; block < n_blocks; ++block) {
         CellBlockSums s;
         for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
-            const Vec3 w = cells_.angular_velocity[c], inertia = cells_.principal_inertia[c];
+            // Angular velocities live at half steps (forward Euler in the torque after the
+            // orientation update = leapfrog staggering); the energy uses the synchronised value.
+            const Vec3 inertia = cells_.principal_inertia[c];
+            const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
+            const Vec3 w = cells_.angular_velocity[c] - (0.5 * sync_dt) * Vec3{torque_body.x / inertia.x,
+                                                                               torque_body.y / inertia.y,
+                                                                               torque_body.z / inertia.z};
             s.kinetic_translation += 0.5 * cells_.mass[c] * norm2(cells_.velocity[c]);
-            s.kinetic_rotation += 0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
+            s.kinetic_rotation +=
+                0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
             const double check = norm2(cells_.position[c]) + norm2(cells_.velocity[c]) + norm2(w);
             if (!std::isfinite(check) && s.non_finite_cell < 0) s.non_finite_cell = c;
         }
@@ -780,13 +798,14 @@ void DemModel::updateStatus(int non_finite_cell)
     status_.time = time_;
     status_.cell = non_finite_cell;
     const DemEnergies& e = energies_;
-    energy_scale_ = std::max(energy_scale_, e.kinetic() + e.stored() + e.dissipated() + std::fabs(e.wall_work) +
-                                                std::fabs(e.gravity_work));
+    energy_scale_ = std::max(energy_scale_, e.kinetic() + e.stored() + e.dissipated() +
+                                                std::fabs(e.wall_work) + std::fabs(e.gravity_work));
     status_.energy_scale = energy_scale_;
     status_.energy_error = e.balance() - initial_balance_;
     if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
         status_.code = DemStatusCode::nonFiniteState;
-    else if (status_.energy_error > parameters_.energy_growth_tolerance * energy_scale_ && status_.energy_error > 0.0)
+    else if (status_.energy_error > parameters_.energy_growth_tolerance * energy_scale_ &&
+             status_.energy_error > 0.0)
         status_.code = DemStatusCode::energyGrowth;
 }
 
@@ -799,7 +818,7 @@ double DemModel::step(double dt)
     kick(dt);
     time_ += dt;
     ++counters_.steps;
-    measureCells();
+    measureCells(dt);
     return time_;
 }
 
@@ -811,8 +830,8 @@ void requireSize(std::size_t got, int expected, const char* what)
 {
     if (static_cast<int>(got) != expected) {
         std::ostringstream message;
-        message << "restart data does not match the model: " << what << " has " << got << " entries, expected "
-                << expected;
+        message << "restart data does not match the model: " << what << " has " << got
+                << " entries, expected " << expected;
         throw UserError(message.str());
     }
 }
@@ -892,7 +911,8 @@ std::vector<double> DemModel::cellDamage() const
 {
     std::vector<int> broken(cells_.size(), 0);
     for (int k = 0; k < interfaces_.size(); ++k) {
-        const int n_broken = interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
+        const int n_broken =
+            interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
         broken[interfaces_.cell_i[k]] += n_broken;
         broken[interfaces_.cell_j[k]] += n_broken;
     }
@@ -911,25 +931,28 @@ Vec3 DemModel::angularMomentum(int c) const
 std::size_t DemModel::memoryBytes() const
 {
     const CellArrays& c = cells_;
-    std::size_t total = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) + bytes(c.angular_velocity) +
-                        bytes(c.force) + bytes(c.torque) + bytes(c.mass) + bytes(c.principal_inertia) +
-                        bytes(c.dilation_radius) + bytes(c.bounding_radius) + bytes(c.core_vertex_offset) +
-                        bytes(c.core_vertices) + bytes(c.initial_bond_count);
+    std::size_t total = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) +
+                        bytes(c.angular_velocity) + bytes(c.force) + bytes(c.torque) + bytes(c.mass) +
+                        bytes(c.principal_inertia) + bytes(c.dilation_radius) + bytes(c.bounding_radius) +
+                        bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.initial_bond_count);
     const InterfaceArrays& f = interfaces_;
-    total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) + bytes(f.normal_i) +
-             bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) + bytes(f.bond_area) + bytes(f.damping_beta) +
-             bytes(f.force_on_i) + bytes(f.torque_on_i) + bytes(f.torque_on_j);
+    total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
+             bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
+             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.force_on_i) + bytes(f.torque_on_i) +
+             bytes(f.torque_on_j);
     const BondArrays& b = bonds_;
     total += bytes(b.anchor_i) + bytes(b.anchor_j) + bytes(b.stage) + bytes(b.onset_displacement) +
-             bytes(b.onset_stress) + bytes(b.rupture_displacement) + bytes(b.max_displacement) + bytes(b.damage);
+             bytes(b.onset_stress) + bytes(b.rupture_displacement) + bytes(b.max_displacement) +
+             bytes(b.damage);
     const ContactPairArrays& p = pairs_;
     total += bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
              bytes(p.last_normal) + bytes(p.force_on_b) + bytes(p.torque_on_a) + bytes(p.torque_on_b) +
-             bytes(p.elastic_energy) + bytes(p.damping_power) + bytes(p.friction_dissipation) + bytes(p.status);
+             bytes(p.elastic_energy) + bytes(p.damping_power) + bytes(p.friction_dissipation) +
+             bytes(p.status);
     total += bytes(rotation_) + bytes(angular_velocity_world_) + bytes(cell_interface_offset_) +
-             bytes(cell_interfaces_) + bytes(cell_pair_offset_) + bytes(cell_pairs_) + bytes(cell_wall_item_offset_) +
-             bytes(neighbour_offset_) + bytes(neighbour_cell_) + bytes(neighbour_interface_) +
-             bytes(position_at_build_);
+             bytes(cell_interfaces_) + bytes(cell_pair_offset_) + bytes(cell_pairs_) +
+             bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) + bytes(neighbour_cell_) +
+             bytes(neighbour_interface_) + bytes(position_at_build_);
     return total;
 }
 

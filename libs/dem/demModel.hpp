@@ -32,7 +32,7 @@ enum class DemStatusCode { ok, nonFiniteState, energyGrowth };
 // What the last step found; the caller turns it into a message naming the step.
 struct DemStatus {
     DemStatusCode code = DemStatusCode::ok;
-    long step = 0;              // step index at which it was found
+    long step = 0;  // step index at which it was found
     double time = 0.0;
     double energy_error = 0.0;  // balance minus its initial value [J]
     double energy_scale = 0.0;  // the largest energy of the run so far [J]
@@ -47,12 +47,12 @@ struct DemCounters {
     long neighbour_rebuilds = 0;
     int bonds = 0;
     int bonds_broken = 0;
-    int interfaces_open = 0;         // cell pairs whose every bond is broken
-    int contact_pairs_listed = 0;    // current neighbour list
-    int contacts_active = 0;         // cell–cell contacts with overlap
+    int interfaces_open = 0;       // cell pairs whose every bond is broken
+    int contact_pairs_listed = 0;  // current neighbour list
+    int contacts_active = 0;       // cell–cell contacts with overlap
     int wall_contacts_active = 0;
-    int core_intersections = 0;      // contacts this step whose cores intersect (fallback normal)
-    int shrunk_cores = 0;            // cells whose erosion failed (shrink fallback)
+    int core_intersections = 0;  // contacts this step whose cores intersect (fallback normal)
+    int shrunk_cores = 0;        // cells whose erosion failed (shrink fallback)
 };
 
 // Rigid motion of a triangulated wall: x_world = translation + R(orientation) x_wall,
@@ -139,7 +139,7 @@ private:
     void rebuildNeighbourLists();
     void buildWallItems();
     void computeForces(double dt);
-    void measureCells();
+    void measureCells(double sync_dt);
     void updateStatus(int non_finite_cell);
     void runBondKernel(double dt);
     void runContactKernels(double dt);
@@ -165,7 +165,7 @@ private:
     ContactPairArrays pairs_;
     WallContactArrays wall_items_;
     std::vector<WallState> walls_;
-    std::vector<Vec3> triangle_vertices_;  // 3 per triangle, each wall's own frame
+    std::vector<Vec3> triangle_vertices_;       // 3 per triangle, each wall's own frame
     std::vector<TriangleGrid> triangle_grids_;  // per wall (empty for plates)
 
     // Per-step caches.

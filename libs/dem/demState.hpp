@@ -22,26 +22,26 @@ struct CellArrays {
     std::vector<Vec3> force;   // total force incl. gravity, world [N]
     std::vector<Vec3> torque;  // about the centroid, world [N m]
     // Constant per cell.
-    std::vector<double> mass;              // [kg]
-    std::vector<Vec3> principal_inertia;   // [kg m^2]
-    std::vector<double> dilation_radius;   // r_d [m]
-    std::vector<double> bounding_radius;   // of the dilated core about the centroid [m]
-    std::vector<int> core_vertex_offset;   // core of cell c: [offset[c], offset[c+1])
-    std::vector<Vec3> core_vertices;       // eroded cell, body frame [m]
-    std::vector<int> initial_bond_count;   // bonds the cell started with
+    std::vector<double> mass;             // [kg]
+    std::vector<Vec3> principal_inertia;  // [kg m^2]
+    std::vector<double> dilation_radius;  // r_d [m]
+    std::vector<double> bounding_radius;  // of the dilated core about the centroid [m]
+    std::vector<int> core_vertex_offset;  // core of cell c: [offset[c], offset[c+1])
+    std::vector<Vec3> core_vertices;      // eroded cell, body frame [m]
+    std::vector<int> initial_bond_count;  // bonds the cell started with
 
     int size() const { return static_cast<int>(mass.size()); }
 };
 
 // Cell pairs that share a bonded face. Interface k owns bonds [bond_offset[k], bond_offset[k+1]).
 struct InterfaceArrays {
-    std::vector<int> cell_i, cell_j;     // cell_i < cell_j
+    std::vector<int> cell_i, cell_j;  // cell_i < cell_j
     std::vector<int> bond_offset;
-    std::vector<int> intact_bonds;       // bonds with D < 1; 0 switches the pair's contact on
-    std::vector<Vec3> normal_i, normal_j;  // outward face normals, each in its cell's body frame
+    std::vector<int> intact_bonds;           // bonds with D < 1; 0 switches the pair's contact on
+    std::vector<Vec3> normal_i, normal_j;    // outward face normals, each in its cell's body frame
     std::vector<double> length_i, length_j;  // l_i, l_j [m]
-    std::vector<double> bond_area;       // A/n [m^2]
-    std::vector<double> damping_beta;    // beta of Eqs. 18–19 in seconds after the chosen reading [s]
+    std::vector<double> bond_area;           // A/n [m^2]
+    std::vector<double> damping_beta;        // beta of Eqs. 18–19 in seconds after the chosen reading [s]
     std::vector<Vec3> force_on_i, torque_on_i, torque_on_j;  // sums over the interface's bonds
 
     int size() const { return static_cast<int>(cell_i.size()); }
@@ -74,7 +74,7 @@ struct ContactPairArrays {
 // Cell–wall contact candidates, sorted by (cell, wall).
 struct WallContactArrays {
     std::vector<int> cell, wall;
-    std::vector<int> triangle_offset, triangles;  // candidate triangles (tri surfaces)
+    std::vector<int> triangle_offset, triangles;       // candidate triangles (tri surfaces)
     std::vector<Vec3> tangential_spring, last_normal;  // history, carried by (cell, wall)
     std::vector<Vec3> force_on_cell, torque_on_cell;
     std::vector<double> elastic_energy, damping_power, friction_dissipation, wall_power;
@@ -87,14 +87,14 @@ struct WallContactArrays {
 struct DemEnergies {
     double kinetic_translation = 0.0;
     double kinetic_rotation = 0.0;
-    double bond_strain = 0.0;         // recoverable elastic energy of the bonds
-    double contact_elastic = 0.0;     // Hertz normal + tangential springs
-    double bond_damping = 0.0;        // cumulative dashpot dissipation of the bonds
-    double contact_damping = 0.0;     // cumulative restitution damping of the contacts
-    double friction = 0.0;            // cumulative Coulomb sliding
-    double fracture = 0.0;            // cumulative damage dissipation (-> G_f A/n per broken bond)
-    double wall_work = 0.0;           // cumulative work done on the cells by the walls
-    double gravity_work = 0.0;        // cumulative work done on the cells by gravity
+    double bond_strain = 0.0;      // recoverable elastic energy of the bonds
+    double contact_elastic = 0.0;  // Hertz normal + tangential springs
+    double bond_damping = 0.0;     // cumulative dashpot dissipation of the bonds
+    double contact_damping = 0.0;  // cumulative restitution damping of the contacts
+    double friction = 0.0;         // cumulative Coulomb sliding
+    double fracture = 0.0;         // cumulative damage dissipation (-> G_f A/n per broken bond)
+    double wall_work = 0.0;        // cumulative work done on the cells by the walls
+    double gravity_work = 0.0;     // cumulative work done on the cells by gravity
 
     double kinetic() const { return kinetic_translation + kinetic_rotation; }
     double stored() const { return bond_strain + contact_elastic; }

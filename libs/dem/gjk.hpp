@@ -37,7 +37,10 @@ RF_HD inline int supportIndex(const ConvexVertexSet& s, const Vec3& direction)
     return best;
 }
 
-RF_HD inline Vec3 worldVertex(const ConvexVertexSet& s, int v) { return s.position + s.rotation * s.vertices[v]; }
+RF_HD inline Vec3 worldVertex(const ConvexVertexSet& s, int v)
+{
+    return s.position + s.rotation * s.vertices[v];
+}
 
 RF_HD inline Vec3 supportPoint(const ConvexVertexSet& s, const Vec3& direction)
 {
@@ -212,7 +215,8 @@ RF_HD inline GjkResult gjkDistance(const ConvexVertexSet& A, const ConvexVertexS
             if (v2 - dot(v, sv.w) <= 1e-12 * v2) break;
             bool repeated = false;
             for (int i = 0; i < simplex.size; ++i)
-                repeated = repeated || (simplex.v[i].index_a == sv.index_a && simplex.v[i].index_b == sv.index_b);
+                repeated =
+                    repeated || (simplex.v[i].index_a == sv.index_a && simplex.v[i].index_b == sv.index_b);
             if (repeated) break;
         }
         first = false;

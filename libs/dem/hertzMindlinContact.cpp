@@ -2,7 +2,13 @@
 
 namespace rockfrac {
 
-void runHertzMindlinPairs(const PairKernelArgs& args) { runPairKernel<HertzMindlinLaw>(args); }
-void runHertzMindlinWalls(const WallKernelArgs& args) { runWallKernel<HertzMindlinLaw>(args); }
+void runHertzMindlinPairs(const PairKernelArgs& args)
+{
+    runPairKernel<HertzMindlinLaw>(args);
+}
+void runHertzMindlinWalls(const WallKernelArgs& args)
+{
+    runWallKernel<HertzMindlinLaw>(args);
+}
 
 }  // namespace rockfrac

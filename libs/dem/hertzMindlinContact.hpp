@@ -9,24 +9,28 @@
 namespace rockfrac {
 
 struct HertzMindlinLaw {
-    RF_HD static ContactOutput evaluate(const ContactConstants& k, const ContactInput& in, Vec3& tangential_spring)
+    RF_HD static ContactOutput evaluate(const ContactConstants& k, const ContactInput& in,
+                                        Vec3& tangential_spring)
     {
         ContactOutput out;
         const Vec3& n = in.normal;
-        const double contact_radius = std::sqrt(in.effective_radius * in.overlap);  // sqrt(R* delta)
-        const double normal_stiffness = 2.0 * k.effective_modulus * contact_radius;        // S_n
+        const double contact_radius = std::sqrt(in.effective_radius * in.overlap);   // sqrt(R* delta)
+        const double normal_stiffness = 2.0 * k.effective_modulus * contact_radius;  // S_n
         const double tangential_stiffness = 8.0 * k.effective_shear_modulus * contact_radius;  // S_t
         // Viscous coefficients from the restitution: -2 sqrt(5/6) beta_e sqrt(S m*) (beta_e < 0).
         const double damping_factor = -2.0 * std::sqrt(5.0 / 6.0) * k.restitution_beta;
         const double normal_damping = damping_factor * std::sqrt(normal_stiffness * in.effective_mass);
-        const double tangential_damping = damping_factor * std::sqrt(tangential_stiffness * in.effective_mass);
+        const double tangential_damping =
+            damping_factor * std::sqrt(tangential_stiffness * in.effective_mass);
 
         const double normal_velocity = dot(in.relative_velocity, n);  // > 0 when separating
         const Vec3 tangential_velocity = in.relative_velocity - normal_velocity * n;
         const double elastic_normal_force = (4.0 / 3.0) * k.effective_modulus * contact_radius * in.overlap;
         double normal_force = elastic_normal_force - normal_damping * normal_velocity;
-        if (normal_force < 0.0) normal_force = 0.0;  // a contact pushes, never pulls
-        else out.damping_power = normal_damping * normal_velocity * normal_velocity;
+        if (normal_force < 0.0)
+            normal_force = 0.0;  // a contact pushes, never pulls
+        else
+            out.damping_power = normal_damping * normal_velocity * normal_velocity;
 
         // The stored spring is turned into the current tangent plane (magnitude kept),
         // then incremented by -S_t times the tangential slip of this step.

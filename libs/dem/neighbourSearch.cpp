@@ -37,8 +37,8 @@ struct UniformGrid {
 
 }  // namespace
 
-std::vector<std::pair<int, int>> findNearPairs(const std::vector<Vec3>& centres, const std::vector<double>& radii,
-                                               double skin)
+std::vector<std::pair<int, int>> findNearPairs(const std::vector<Vec3>& centres,
+                                               const std::vector<double>& radii, double skin)
 {
     const int n = static_cast<int>(centres.size());
     std::vector<std::pair<int, int>> pairs;
@@ -119,7 +119,8 @@ TriangleGrid::TriangleGrid(const std::vector<Vec3>& triangle_vertices)
         binRange(tlo, thi, a, b);
         for (int ix = a[0]; ix <= b[0]; ++ix)
             for (int iy = a[1]; iy <= b[1]; ++iy)
-                for (int iz = a[2]; iz <= b[2]; ++iz) per_bin[(ix * dims_[1] + iy) * dims_[2] + iz].push_back(t);
+                for (int iz = a[2]; iz <= b[2]; ++iz)
+                    per_bin[(ix * dims_[1] + iy) * dims_[2] + iz].push_back(t);
     }
     bin_offset_.assign(per_bin.size() + 1, 0);
     for (std::size_t b = 0; b < per_bin.size(); ++b) {
@@ -131,8 +132,10 @@ TriangleGrid::TriangleGrid(const std::vector<Vec3>& triangle_vertices)
 void TriangleGrid::binRange(const Vec3& low, const Vec3& high, int lo[3], int hi[3]) const
 {
     for (int d = 0; d < 3; ++d) {
-        lo[d] = std::min(dims_[d] - 1, std::max(0, static_cast<int>(std::floor((low[d] - origin_[d]) / spacing_))));
-        hi[d] = std::min(dims_[d] - 1, std::max(0, static_cast<int>(std::floor((high[d] - origin_[d]) / spacing_))));
+        lo[d] = std::min(dims_[d] - 1,
+                         std::max(0, static_cast<int>(std::floor((low[d] - origin_[d]) / spacing_))));
+        hi[d] = std::min(dims_[d] - 1,
+                         std::max(0, static_cast<int>(std::floor((high[d] - origin_[d]) / spacing_))));
     }
 }
 

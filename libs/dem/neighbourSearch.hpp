@@ -9,8 +9,8 @@
 namespace rockfrac {
 
 // Pairs (i < j) whose spheres (centre, radius) come closer than skin, sorted by (i, j).
-std::vector<std::pair<int, int>> findNearPairs(const std::vector<Vec3>& centres, const std::vector<double>& radii,
-                                               double skin);
+std::vector<std::pair<int, int>> findNearPairs(const std::vector<Vec3>& centres,
+                                               const std::vector<double>& radii, double skin);
 
 // Triangles (3 vertices each, in the surface's own frame) binned by their bounding boxes.
 class TriangleGrid {

@@ -24,7 +24,10 @@ RF_HD inline Quat operator*(const Quat& a, const Quat& b)
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
-RF_HD inline Quat conjugate(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+RF_HD inline Quat conjugate(const Quat& q)
+{
+    return {q.w, -q.x, -q.y, -q.z};
+}
 
 RF_HD inline Quat normalised(const Quat& q)
 {

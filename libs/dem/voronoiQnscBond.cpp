@@ -2,6 +2,9 @@
 
 namespace rockfrac {
 
-void runVoronoiQnscBonds(const BondKernelArgs& args) { runBondKernel<VoronoiQnscLaw>(args); }
+void runVoronoiQnscBonds(const BondKernelArgs& args)
+{
+    runBondKernel<VoronoiQnscLaw>(args);
+}
 
 }  // namespace rockfrac

@@ -45,12 +45,13 @@ struct VoronoiQnscLaw {
         const double tensile = sigma_onset > 0.0 ? sigma_onset : 0.0;
         const double total = tensile * tensile + tau_onset * tau_onset;
         const double mixity = total > 0.0 ? tau_onset * tau_onset / total : 0.0;
-        return m.fracture_energy_I + (m.fracture_energy_II - m.fracture_energy_I) * std::pow(mixity, m.bk_exponent);
+        return m.fracture_energy_I +
+               (m.fracture_energy_II - m.fracture_energy_I) * std::pow(mixity, m.bk_exponent);
     }
 
     // Algorithm 1, steps 4–5 with Remarks 1.1–1.3. Returns the damage before this call.
-    RF_HD static double updateDamage(const BondMaterial& m, double sigma, double tau, double effective_displacement,
-                                     BondHistory& h)
+    RF_HD static double updateDamage(const BondMaterial& m, double sigma, double tau,
+                                     double effective_displacement, BondHistory& h)
     {
         const double damage_before = h.damage;
         if (h.stage == bondElastic) {
@@ -84,18 +85,20 @@ struct VoronoiQnscLaw {
         BondOutput out;
         if (h.stage == bondBroken) return out;
         const double l = in.reference_length;
-        const double normal_opening = dot(in.opening, in.normal);       // d_n
+        const double normal_opening = dot(in.opening, in.normal);            // d_n
         const Vec3 shear_opening = in.opening - normal_opening * in.normal;  // d_t t
         const double shear_opening2 = norm2(shear_opening);
         // Undamaged stresses (Eqs. 5–8), used for the onset test.
         const double sigma_trial = m.normal_modulus * normal_opening / l;
         const double tau_trial = m.shear_modulus * std::sqrt(shear_opening2) / l;
         const double tensile_opening = normal_opening > 0.0 ? normal_opening : 0.0;
-        const double effective_displacement = std::sqrt(tensile_opening * tensile_opening + shear_opening2);  // Eq. 10
+        const double effective_displacement =
+            std::sqrt(tensile_opening * tensile_opening + shear_opening2);  // Eq. 10
         const double damage_before = updateDamage(m, sigma_trial, tau_trial, effective_displacement, h);
 
         // Energy that damage releases: D multiplies the tensile and shear parts only.
-        const double damageable_energy = 0.5 * in.bond_area *
+        const double damageable_energy =
+            0.5 * in.bond_area *
             (m.normal_modulus * tensile_opening * tensile_opening + m.shear_modulus * shear_opening2) / l;
         out.fracture_dissipation = damageable_energy * (h.damage - damage_before);
         if (h.stage == bondBroken) return out;  // D = 1: force and stiffness removed
@@ -106,14 +109,15 @@ struct VoronoiQnscLaw {
         const Vec3 shear_stress = (intact * m.shear_modulus / l) * shear_opening;  // tau t
         // Dashpot (Eqs. 18–19) from the anchor points' relative velocity; it always
         // opposes the relative motion (see docs/theory-dem.md for the sign).
-        const double normal_rate = dot(in.relative_velocity, in.normal) / l;                     // eps-dot
-        const Vec3 shear_rate = (in.relative_velocity - (normal_rate * l) * in.normal) / l;      // gamma-dot t
+        const double normal_rate = dot(in.relative_velocity, in.normal) / l;                 // eps-dot
+        const Vec3 shear_rate = (in.relative_velocity - (normal_rate * l) * in.normal) / l;  // gamma-dot t
         const double beta = in.damping_beta;
-        out.force_on_i = in.bond_area * ((sigma + beta * m.normal_modulus * normal_rate) * in.normal + shear_stress +
-                                         (beta * m.shear_modulus) * shear_rate);
+        out.force_on_i = in.bond_area * ((sigma + beta * m.normal_modulus * normal_rate) * in.normal +
+                                         shear_stress + (beta * m.shear_modulus) * shear_rate);
         out.strain_energy = 0.5 * in.bond_area * (sigma * normal_opening + dot(shear_stress, shear_opening));
         out.damping_power =
-            in.bond_area * beta * l * (m.normal_modulus * normal_rate * normal_rate + m.shear_modulus * norm2(shear_rate));
+            in.bond_area * beta * l *
+            (m.normal_modulus * normal_rate * normal_rate + m.shear_modulus * norm2(shear_rate));
         return out;
     }
 };
