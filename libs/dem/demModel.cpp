@@ -328,6 +328,7 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
     walls_.push_back(w);
     setWallMotion(nWalls() - 1, motion);
     walls_.back().initial_origin = motion.translation;
+    lists_valid_ = false;
     return nWalls() - 1;
 }
 
@@ -380,7 +381,7 @@ void DemModel::moveWalls(double dt)
 
 bool DemModel::neighbourListsStale() const
 {
-    if (!lists_valid_) return true;
+    if (!lists_valid_ || wall_origin_at_build_.size() != walls_.size()) return true;
     double cell_move2 = 0.0;
     for (int c = 0; c < cells_.size(); ++c)
         cell_move2 = std::max(cell_move2, norm2(cells_.position[c] - position_at_build_[c]));
@@ -788,6 +789,12 @@ void DemModel::measureCells(double sync_dt)
         energies_.kinetic_rotation += s.kinetic_rotation;
         if (non_finite < 0) non_finite = s.non_finite_cell;
     }
+    // A state set by the caller is an energy input: the balance is measured from here.
+    if (rebase_energy_) {
+        initial_balance_ = energies_.balance();
+        energy_scale_ = 0.0;
+        rebase_energy_ = false;
+    }
     updateStatus(non_finite);
 }
 
@@ -851,6 +858,7 @@ void DemModel::setCellState(const std::vector<Vec3>& position, const std::vector
     cells_.orientation = orientation;
     cells_.angular_velocity = angular_velocity;
     lists_valid_ = forces_valid_ = false;
+    rebase_energy_ = true;
 }
 
 void DemModel::setBondHistory(const BondArrays& history)
@@ -891,6 +899,7 @@ void DemModel::setClock(double time, long steps, const DemEnergies& energies, do
     counters_.steps = steps;
     energies_ = energies;
     initial_balance_ = initial_balance;
+    rebase_energy_ = false;
 }
 
 void DemModel::setCellPose(int cell, const Vec3& position, const Quat& orientation)
@@ -898,6 +907,7 @@ void DemModel::setCellPose(int cell, const Vec3& position, const Quat& orientati
     cells_.position.at(cell) = position;
     cells_.orientation.at(cell) = normalised(orientation);
     forces_valid_ = false;
+    rebase_energy_ = true;
 }
 
 void DemModel::setCellVelocity(int cell, const Vec3& velocity, const Vec3& angular_velocity_body)
@@ -905,6 +915,7 @@ void DemModel::setCellVelocity(int cell, const Vec3& velocity, const Vec3& angul
     cells_.velocity.at(cell) = velocity;
     cells_.angular_velocity.at(cell) = angular_velocity_body;
     forces_valid_ = false;
+    rebase_energy_ = true;
 }
 
 std::vector<double> DemModel::cellDamage() const

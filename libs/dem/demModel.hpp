@@ -118,7 +118,8 @@ public:
     double initialBalance() const { return initial_balance_; }
 
     // Imposed kinematics (tests, studies): move a cell; forces are stale until the
-    // next evaluateForces() or step().
+    // next evaluateForces() or step(), which also restart the energy balance there
+    // (a state set from outside is an energy input the balance cannot see).
     void setCellPose(int cell, const Vec3& position, const Quat& orientation);
     void setCellVelocity(int cell, const Vec3& velocity, const Vec3& angular_velocity_body);
 
@@ -184,6 +185,7 @@ private:
     std::vector<Quat> wall_orientation_at_build_;
     bool lists_valid_ = false;
     bool forces_valid_ = false;
+    bool rebase_energy_ = false;  // the caller changed the state: restart the balance
 
     // Deterministic block sums.
     std::vector<BondBlockSums> bond_block_sums_;
