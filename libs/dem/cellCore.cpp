@@ -1,0 +1,59 @@
+#include "dem/cellCore.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <voro++.hh>
+
+namespace rockfrac {
+
+namespace {
+
+ErodedCore shrinkTowardCentroid(const std::vector<Vec3>& cell_vertices, const std::vector<CellPlane>& faces,
+                                double dilation_radius)
+{
+    double smallest_offset = 1e300;
+    for (const CellPlane& face : faces) smallest_offset = std::min(smallest_offset, face.offset);
+    const double factor = std::max(1.0 - dilation_radius / smallest_offset, 0.1);
+    ErodedCore core;
+    core.shrunk = true;
+    for (const Vec3& v : cell_vertices) core.vertices.push_back(factor * v);
+    return core;
+}
+
+}  // namespace
+
+ErodedCore erodeConvexCell(const std::vector<Vec3>& cell_vertices, const std::vector<CellPlane>& faces,
+                           double dilation_radius)
+{
+    // Voro++ works to an absolute tolerance (~1e-11): cut in units of the cell size.
+    double size = 0.0;
+    for (const Vec3& v : cell_vertices) size = std::max(size, norm(v));
+    if (!(size > 0.0)) return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
+    const double scale = 1.0 / size;
+    const double box = 1.5;
+    voro::voronoicell cell;
+    cell.init(-box, box, -box, box, -box, box);
+    for (const CellPlane& face : faces) {
+        const double eroded_offset = (face.offset - dilation_radius) * scale;
+        // voro++ keeps the points with x . (a, b, c) < rsq / 2.
+        if (!cell.plane(face.normal.x, face.normal.y, face.normal.z, 2.0 * eroded_offset))
+            return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
+    }
+    // A core thinner than 1e-6 of the cell is degenerate for GJK and inertia alike.
+    if (cell.volume() < 1e-18 || cell.p < 4)
+        return shrinkTowardCentroid(cell_vertices, faces, dilation_radius);
+    std::vector<double> coordinates;
+    cell.vertices(coordinates);
+    ErodedCore core;
+    for (std::size_t i = 0; i + 2 < coordinates.size(); i += 3) {
+        const Vec3 v{coordinates[i] * size, coordinates[i + 1] * size, coordinates[i + 2] * size};
+        // Voro++ can return coincident vertices at degenerate corners; keep one.
+        const bool duplicate = std::any_of(core.vertices.begin(), core.vertices.end(), [&](const Vec3& u) {
+            return norm2(u - v) <= 1e-24 * size * size;
+        });
+        if (!duplicate) core.vertices.push_back(v);
+    }
+    return core;
+}
+
+}  // namespace rockfrac

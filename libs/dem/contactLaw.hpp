@@ -1,0 +1,302 @@
+#pragma once
+// The contact law interface and the two contact kernels that use it: cell–cell
+// pairs (between the dilated cores, GJK narrow phase) and cell–wall items
+// (plates and triangulated surfaces).
+//
+// A law is a struct with one static RF_HD function
+//     ContactOutput evaluate(const ContactConstants&, const ContactInput&, Vec3& tangential_spring)
+// A new law is a new file (the struct and its two runners, see hertzMindlinContact.*)
+// plus one line in contactLawTable.cpp.
+#include <string>
+#include <vector>
+
+#include "core/vec3.hpp"
+#include "dem/gjk.hpp"
+
+namespace rockfrac {
+
+// Constants of one material pairing (rock–rock or rock–steel).
+struct ContactConstants {
+    double effective_modulus = 0.0;        // E*: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 [Pa]
+    double effective_shear_modulus = 0.0;  // G*: 1/G* = (2-nu1)/G1 + (2-nu2)/G2 [Pa]
+    double friction = 0.0;                 // Coulomb coefficient mu [-]
+    double restitution_beta = 0.0;         // beta_e = ln e / sqrt(ln^2 e + pi^2) (< 0) [-]
+};
+
+struct ContactInput {
+    double overlap = 0.0;           // delta > 0 [m]
+    Vec3 normal;                    // unit, from body A (or the wall) to body B (the cell)
+    Vec3 relative_velocity;         // velocity of B minus that of A at the contact point [m/s]
+    double effective_radius = 0.0;  // R* [m]
+    double effective_mass = 0.0;    // m* [kg]
+    double dt = 0.0;                // time step, for the tangential spring increment [s]
+};
+
+struct ContactOutput {
+    Vec3 force_on_b;                    // A receives the opposite force [N]
+    double elastic_energy = 0.0;        // stored in the normal and tangential springs [J]
+    double damping_power = 0.0;         // viscous dissipation rate, >= 0 [W]
+    double friction_dissipation = 0.0;  // energy lost by sliding in this call [J]
+};
+
+// Contact status of a pair or wall item after a kernel call.
+enum ContactStatus : unsigned char { contactNone = 0, contactActive = 1, contactCoresIntersect = 2 };
+
+// Cell data the contact kernels read.
+struct CellContactView {
+    const Vec3* position = nullptr;
+    const Vec3* velocity = nullptr;
+    const Vec3* angular_velocity_world = nullptr;
+    const Mat3* rotation = nullptr;
+    const double* mass = nullptr;
+    const double* dilation_radius = nullptr;
+    const double* bounding_radius = nullptr;  // of the dilated core about the centroid
+    const int* core_vertex_offset = nullptr;
+    const Vec3* core_vertices = nullptr;  // body frame
+};
+
+RF_HD inline ConvexVertexSet cellCore(const CellContactView& cells, int c)
+{
+    ConvexVertexSet core;
+    core.vertices = cells.core_vertices + cells.core_vertex_offset[c];
+    core.n_vertices = cells.core_vertex_offset[c + 1] - cells.core_vertex_offset[c];
+    core.position = cells.position[c];
+    core.rotation = cells.rotation[c];
+    return core;
+}
+
+RF_HD inline Vec3 pointVelocity(const CellContactView& cells, int c, const Vec3& point)
+{
+    return cells.velocity[c] + cross(cells.angular_velocity_world[c], point - cells.position[c]);
+}
+
+// Per-item outputs shared by pairs and wall items.
+struct ContactItemOutputs {
+    Vec3* tangential_spring = nullptr;  // history, world frame
+    Vec3* last_normal = nullptr;        // history, for intersecting cores
+    double* elastic_energy = nullptr;
+    double* damping_power = nullptr;
+    double* friction_dissipation = nullptr;
+    unsigned char* status = nullptr;
+};
+
+RF_HD inline void clearItem(const ContactItemOutputs& o, int item)
+{
+    o.tangential_spring[item] = Vec3{};
+    o.elastic_energy[item] = 0.0;
+    o.damping_power[item] = 0.0;
+    o.friction_dissipation[item] = 0.0;
+    o.status[item] = contactNone;
+}
+
+RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const ContactOutput& out,
+                            unsigned char status)
+{
+    o.elastic_energy[item] = out.elastic_energy;
+    o.damping_power[item] = out.damping_power;
+    o.friction_dissipation[item] = out.friction_dissipation;
+    o.status[item] = status;
+}
+
+struct PairKernelArgs {
+    ContactConstants constants;  // rock–rock
+    double dt = 0.0;
+    int n_pairs = 0;
+    CellContactView cells;
+    const int* intact_bonds = nullptr;  // per interface
+    const int* cell_a = nullptr;
+    const int* cell_b = nullptr;
+    const int* interface = nullptr;  // -1 when the pair shares no face
+    ContactItemOutputs items;
+    Vec3* force_on_b = nullptr;
+    Vec3* torque_on_a = nullptr;
+    Vec3* torque_on_b = nullptr;
+};
+
+// Where two dilated bodies touch: normal from A to B, overlap, contact point.
+struct ContactGeometry {
+    Vec3 normal, point;
+    double overlap = 0.0;
+    bool cores_intersect = false;
+};
+
+// Overlap along a fixed normal from the support points of the two cores: used
+// when the cores themselves intersect and GJK has no separating direction.
+RF_HD inline ContactGeometry supportGeometry(const ConvexVertexSet& A, const ConvexVertexSet& B,
+                                             const Vec3& normal, double radius_a, double radius_b)
+{
+    ContactGeometry g;
+    const Vec3 point_a = supportPoint(A, normal);
+    const Vec3 point_b = supportPoint(B, -normal);
+    g.normal = normal;
+    g.overlap = radius_a + radius_b - dot(point_b - point_a, normal);
+    g.point = 0.5 * (point_a + radius_a * normal + point_b - radius_b * normal);
+    g.cores_intersect = true;
+    return g;
+}
+
+// Closest points of the cores by GJK; the dilated surfaces are r_d outside them.
+RF_HD inline ContactGeometry coreGeometry(const ConvexVertexSet& A, const ConvexVertexSet& B, double radius_a,
+                                          double radius_b, const Vec3& fallback_normal)
+{
+    const GjkResult gjk = gjkDistance(A, B, A.position - B.position);
+    const double scale = radius_a + radius_b;
+    if (gjk.intersecting || gjk.distance <= 1e-9 * scale)
+        return supportGeometry(A, B, fallback_normal, radius_a, radius_b);
+    ContactGeometry g;
+    g.normal = (gjk.point_b - gjk.point_a) / gjk.distance;
+    g.overlap = scale - gjk.distance;
+    g.point = 0.5 * (gjk.point_a + radius_a * g.normal + gjk.point_b - radius_b * g.normal);
+    return g;
+}
+
+template <class Law>
+RF_HD inline void pairKernel(const PairKernelArgs& a, int p)
+{
+    const int ca = a.cell_a[p], cb = a.cell_b[p];
+    a.force_on_b[p] = a.torque_on_a[p] = a.torque_on_b[p] = Vec3{};
+    const CellContactView& cells = a.cells;
+    const int iface = a.interface[p];
+    // Bonded pairs never get contact forces; the contact starts when the last bond breaks.
+    const bool bonded = iface >= 0 && a.intact_bonds[iface] > 0;
+    const Vec3 between = cells.position[cb] - cells.position[ca];
+    const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
+    if (bonded || norm2(between) > reach * reach) return clearItem(a.items, p);
+    const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
+    const Vec3 previous = a.items.last_normal[p];
+    const Vec3 fallback = norm2(previous) > 0.0 ? previous : normalised(between);
+    const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
+    if (!(g.overlap > 0.0)) return clearItem(a.items, p);
+    a.items.last_normal[p] = g.normal;
+    ContactInput in;
+    in.overlap = g.overlap;
+    in.normal = g.normal;
+    in.relative_velocity = pointVelocity(cells, cb, g.point) - pointVelocity(cells, ca, g.point);
+    in.effective_radius = ra * rb / (ra + rb);
+    in.effective_mass = cells.mass[ca] * cells.mass[cb] / (cells.mass[ca] + cells.mass[cb]);
+    in.dt = a.dt;
+    const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[p]);
+    storeItem(a.items, p, out, g.cores_intersect ? contactCoresIntersect : contactActive);
+    a.force_on_b[p] = out.force_on_b;
+    a.torque_on_a[p] = -cross(g.point - cells.position[ca], out.force_on_b);
+    a.torque_on_b[p] = cross(g.point - cells.position[cb], out.force_on_b);
+}
+
+// A wall's pose at the current time: x_world = origin + rotation * x_local, and
+// its rigid velocity field v(x) = velocity + angular_velocity x (x - origin).
+enum WallKind : int { wallPlate = 0, wallTriSurface = 1 };
+struct WallPose {
+    int kind = wallPlate;
+    Vec3 origin;
+    Mat3 rotation = Mat3::identity();
+    Vec3 velocity;
+    Vec3 angular_velocity;
+    Vec3 normal;             // plates: unit normal into the domain (world)
+    int first_triangle = 0;  // tri surfaces: triangles [first, first + n) of the vertex array
+    int n_triangles = 0;
+};
+
+struct WallKernelArgs {
+    ContactConstants constants;  // rock–steel
+    double dt = 0.0;
+    int n_items = 0;
+    CellContactView cells;
+    const WallPose* walls = nullptr;
+    const Vec3* triangle_vertices = nullptr;  // 3 per triangle, wall frame
+    const int* item_cell = nullptr;
+    const int* item_wall = nullptr;
+    const int* item_triangle_offset = nullptr;  // candidate triangles of item i
+    const int* item_triangles = nullptr;
+    ContactItemOutputs items;
+    Vec3* force_on_cell = nullptr;
+    Vec3* torque_on_cell = nullptr;
+    double* wall_power = nullptr;  // force on the cell . wall velocity at the contact [W]
+};
+
+// Plate: the core's vertex deepest along -n decides; overlap r_d - signed distance.
+RF_HD inline ContactGeometry plateGeometry(const ConvexVertexSet& core, double radius, const WallPose& wall)
+{
+    ContactGeometry g;
+    const Vec3 deepest = supportPoint(core, -wall.normal);
+    const double signed_distance = dot(deepest - wall.origin, wall.normal);
+    g.normal = wall.normal;
+    g.overlap = radius - signed_distance;
+    g.point = deepest - (radius - 0.5 * g.overlap) * wall.normal;
+    return g;
+}
+
+// Triangulated surface: GJK between the core and each candidate triangle; the
+// nearest triangle makes the contact (one contact per cell and surface).
+RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
+                                                double radius, const WallPose& wall, int item)
+{
+    ContactGeometry best;
+    best.overlap = -1e300;
+    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
+        ConvexVertexSet triangle;
+        triangle.vertices = a.triangle_vertices + 3 * a.item_triangles[e];
+        triangle.n_vertices = 3;
+        triangle.position = wall.origin;
+        triangle.rotation = wall.rotation;
+        // The triangle's own normal, turned toward the cell, when the core cuts it.
+        const Vec3 v0 = worldVertex(triangle, 0);
+        Vec3 face_normal = normalised(cross(worldVertex(triangle, 1) - v0, worldVertex(triangle, 2) - v0));
+        if (dot(core.position - v0, face_normal) < 0.0) face_normal = -face_normal;
+        const ContactGeometry g = coreGeometry(triangle, core, 0.0, radius, face_normal);
+        if (g.overlap > best.overlap) best = g;
+    }
+    return best;
+}
+
+template <class Law>
+RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
+{
+    const int c = a.item_cell[item];
+    const WallPose& wall = a.walls[a.item_wall[item]];
+    a.force_on_cell[item] = a.torque_on_cell[item] = Vec3{};
+    a.wall_power[item] = 0.0;
+    const ConvexVertexSet core = cellCore(a.cells, c);
+    const double radius = a.cells.dilation_radius[c];
+    const ContactGeometry g = wall.kind == wallPlate ? plateGeometry(core, radius, wall)
+                                                     : triSurfaceGeometry(a, core, radius, wall, item);
+    if (!(g.overlap > 0.0)) return clearItem(a.items, item);
+    a.items.last_normal[item] = g.normal;
+    const Vec3 wall_velocity = wall.velocity + cross(wall.angular_velocity, g.point - wall.origin);
+    ContactInput in;
+    in.overlap = g.overlap;
+    in.normal = g.normal;
+    in.relative_velocity = pointVelocity(a.cells, c, g.point) - wall_velocity;
+    in.effective_radius = radius;  // R* = r_d against a wall (R = infinity)
+    in.effective_mass = a.cells.mass[c];
+    in.dt = a.dt;
+    const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[item]);
+    storeItem(a.items, item, out, g.cores_intersect ? contactCoresIntersect : contactActive);
+    a.force_on_cell[item] = out.force_on_b;
+    a.torque_on_cell[item] = cross(g.point - a.cells.position[c], out.force_on_b);
+    a.wall_power[item] = dot(out.force_on_b, wall_velocity);
+}
+
+template <class Law>
+void runPairKernel(const PairKernelArgs& a)
+{
+#pragma omp parallel for schedule(static)
+    for (int p = 0; p < a.n_pairs; ++p) pairKernel<Law>(a, p);
+}
+
+template <class Law>
+void runWallKernel(const WallKernelArgs& a)
+{
+#pragma omp parallel for schedule(static)
+    for (int item = 0; item < a.n_items; ++item) wallKernel<Law>(a, item);
+}
+
+struct ContactLawRunners {
+    void (*pairs)(const PairKernelArgs&) = nullptr;
+    void (*walls)(const WallKernelArgs&) = nullptr;
+};
+
+// The law registered under name; a UserError listing the known names otherwise.
+ContactLawRunners contactLawRunners(const std::string& name);
+std::vector<std::string> contactLawNames();
+
+}  // namespace rockfrac

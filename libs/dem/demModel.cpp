@@ -1,0 +1,970 @@
+#include "dem/demModel.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "dem/cellCore.hpp"
+
+namespace rockfrac {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr int cell_block_size = 512;
+
+// Hertz–Mindlin constants of a material pairing (physics.md §3.3).
+ContactConstants contactConstants(double E1, double nu1, double E2, double nu2, double friction,
+                                  double restitution)
+{
+    ContactConstants k;
+    k.effective_modulus = 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
+    const double G1 = E1 / (2.0 * (1.0 + nu1)), G2 = E2 / (2.0 * (1.0 + nu2));
+    k.effective_shear_modulus = 1.0 / ((2.0 - nu1) / G1 + (2.0 - nu2) / G2);
+    k.friction = friction;
+    const double log_e = std::log(restitution);
+    k.restitution_beta = log_e / std::sqrt(log_e * log_e + pi * pi);
+    return k;
+}
+
+BondMaterial bondMaterial(const DemParameters& p)
+{
+    BondMaterial m;
+    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
+    m.normal_modulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // Eq. 7
+    m.shear_modulus = E / (2.0 * (1.0 + nu));                             // Eq. 8
+    m.tensile_strength = p.bond_tensile_strength;
+    m.cohesion = p.bond_cohesion;
+    m.friction = p.bond_friction;
+    m.fracture_energy_I = p.fracture_energy_mode_I;
+    m.fracture_energy_II = p.fracture_energy_mode_II;
+    m.bk_exponent = p.bk_exponent;
+    m.rupture_tolerance = p.rupture_tolerance;
+    return m;
+}
+
+// Build CSR lists "which items does each cell take part in": entry 2*item + side,
+// in increasing item order, so the gather sums in a fixed order.
+void buildCellIncidence(int n_cells, const std::vector<int>& first, const std::vector<int>& second,
+                        std::vector<int>& offset, std::vector<int>& entries)
+{
+    offset.assign(n_cells + 1, 0);
+    for (std::size_t k = 0; k < first.size(); ++k) {
+        ++offset[first[k] + 1];
+        ++offset[second[k] + 1];
+    }
+    for (int c = 0; c < n_cells; ++c) offset[c + 1] += offset[c];
+    entries.resize(offset[n_cells]);
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (std::size_t k = 0; k < first.size(); ++k) {
+        entries[fill[first[k]]++] = 2 * static_cast<int>(k);
+        entries[fill[second[k]]++] = 2 * static_cast<int>(k) + 1;
+    }
+}
+
+template <class T>
+std::size_t bytes(const std::vector<T>& v)
+{
+    return v.capacity() * sizeof(T);
+}
+
+// Angle of the rotation between two orientations.
+double rotationAngle(const Quat& a, const Quat& b)
+{
+    const double c = std::fabs(a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z);
+    return 2.0 * std::acos(std::min(1.0, c));
+}
+
+}  // namespace
+
+std::string DemStatus::message() const
+{
+    std::ostringstream out;
+    switch (code) {
+        case DemStatusCode::ok:
+            out << "DEM step " << step << " ok";
+            break;
+        case DemStatusCode::nonFiniteState:
+            out << "DEM state became NaN/Inf at step " << step << " (t = " << time << " s) in cell " << cell
+                << ": the time step is most likely too large (compare it with the Rayleigh step and the bond"
+                   " stiffness and damping), or a parameter is invalid";
+            break;
+        case DemStatusCode::energyGrowth:
+            out << "DEM energy grew without input at step " << step << " (t = " << time
+                << " s): balance error " << energy_error << " J against an energy scale of " << energy_scale
+                << " J; the time step is most likely too large for the bond stiffness and damping";
+            break;
+    }
+    return out.str();
+}
+
+DemModel::DemModel(const VoronoiMesh& mesh, const DemParameters& parameters) : parameters_(parameters)
+{
+    parameters_.validate();
+    bond_runner_ = bondLawRunner(parameters_.bond_law);
+    contact_runners_ = contactLawRunners(parameters_.contact_law);
+    bond_material_ = bondMaterial(parameters_);
+    rock_rock_ = contactConstants(parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
+                                  parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
+                                  parameters_.rock_rock_friction, parameters_.rock_rock_restitution);
+    rock_steel_ = contactConstants(parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
+                                   parameters_.steel_youngs_modulus, parameters_.steel_poisson_ratio,
+                                   parameters_.rock_steel_friction, parameters_.rock_steel_restitution);
+    buildCells(mesh);
+    buildBonds(mesh);
+    buildIncidence();
+    refreshKinematicCaches();
+    computeForces(0.0);
+    measureCells(0.0);
+    initial_balance_ = energies_.balance();
+}
+
+// ---- Construction -----------------------------------------------------------
+
+void DemModel::buildCells(const VoronoiMesh& mesh)
+{
+    const int n = mesh.nCells();
+    if (n == 0) throw UserError("the Voronoi mesh has no cells");
+    if (static_cast<int>(mesh.centroids.size()) != n || static_cast<int>(mesh.inertia.size()) != n ||
+        static_cast<int>(mesh.cellFaceOffset.size()) != n + 1 ||
+        static_cast<int>(mesh.cellVertexOffset.size()) != n + 1)
+        throw UserError(
+            "the Voronoi mesh is incomplete: centroids, inertia, vertices and faces are needed per cell");
+    const double dilation =
+        parameters_.dilation_radius > 0.0 ? parameters_.dilation_radius : mesh.dilationRadius;
+    if (!(dilation > 0.0))
+        throw UserError("the dilation radius is zero: set it in the mesh or the DEM parameters");
+    skin_ = parameters_.skin_distance > 0.0 ? parameters_.skin_distance : dilation;
+
+    CellArrays& c = cells_;
+    c.position = mesh.centroids;
+    c.velocity.assign(n, Vec3{});
+    c.angular_velocity.assign(n, Vec3{});
+    c.orientation.resize(n);
+    c.force.assign(n, Vec3{});
+    c.torque.assign(n, Vec3{});
+    c.mass.resize(n);
+    c.principal_inertia.resize(n);
+    c.dilation_radius.assign(n, dilation);
+    c.bounding_radius.resize(n);
+    c.core_vertex_offset.assign(1, 0);
+    c.initial_bond_count.assign(n, 0);
+    double smallest_radius = 1e300;
+    for (int cell = 0; cell < n; ++cell) {
+        const double density = parameters_.rock_density;
+        c.mass[cell] = density * mesh.volumes[cell];
+        smallest_radius = std::min(smallest_radius, std::cbrt(3.0 * mesh.volumes[cell] / (4.0 * pi)));
+        // Principal axes: the body frame is the eigenbasis of the inertia tensor.
+        Eigen::Matrix3d inertia;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) inertia(i, j) = density * mesh.inertia[cell](i, j);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
+        Eigen::Matrix3d axes = eigen.eigenvectors();
+        if (axes.determinant() < 0.0) axes.col(2) *= -1.0;
+        Mat3 body_to_world;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) body_to_world(i, j) = axes(i, j);
+        c.orientation[cell] = quatFromRotationMatrix(body_to_world);
+        const Mat3 R = rotationMatrix(c.orientation[cell]);
+        c.principal_inertia[cell] = {eigen.eigenvalues()(0), eigen.eigenvalues()(1), eigen.eigenvalues()(2)};
+
+        // The core: the cell eroded by r_d, stored in the body frame.
+        const Vec3 centroid = mesh.centroids[cell];
+        std::vector<Vec3> vertices;
+        for (int v = mesh.cellVertexOffset[cell]; v < mesh.cellVertexOffset[cell + 1]; ++v)
+            vertices.push_back(mesh.vertices[v] - centroid);
+        std::vector<CellPlane> planes;
+        for (int f = mesh.cellFaceOffset[cell]; f < mesh.cellFaceOffset[cell + 1]; ++f) {
+            const Vec3 on_face = vertices[mesh.faceVertices[mesh.faceVertexOffset[f]]];
+            planes.push_back({mesh.faceNormal[f], dot(mesh.faceNormal[f], on_face)});
+        }
+        const ErodedCore core = erodeConvexCell(vertices, planes, dilation);
+        if (core.shrunk) ++counters_.shrunk_cores;
+        double reach = 0.0;
+        for (const Vec3& v : core.vertices) {
+            c.core_vertices.push_back(transposeTimes(R, v));
+            reach = std::max(reach, norm(v));
+        }
+        c.core_vertex_offset.push_back(static_cast<int>(c.core_vertices.size()));
+        c.bounding_radius[cell] = reach + dilation;
+    }
+    const double G = parameters_.rock_youngs_modulus / (2.0 * (1.0 + parameters_.rock_poisson_ratio));
+    rayleigh_time_step_ = pi * smallest_radius * std::sqrt(parameters_.rock_density / G) /
+                          (0.1631 * parameters_.rock_poisson_ratio + 0.8766);
+}
+
+void DemModel::buildBonds(const VoronoiMesh& mesh)
+{
+    // Interfaces = cell pairs; their bonds are contiguous (sorted by pair, stable).
+    std::vector<int> order(mesh.nBonds());
+    std::iota(order.begin(), order.end(), 0);
+    auto pairOf = [&](int b) {
+        const VoronoiBond& bond = mesh.bonds[b];
+        return std::make_pair(std::min(bond.cellI, bond.cellJ), std::max(bond.cellI, bond.cellJ));
+    };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pairOf(a) < pairOf(b); });
+
+    InterfaceArrays& f = interfaces_;
+    BondArrays& b = bonds_;
+    f.bond_offset.assign(1, 0);
+    const double beta = parameters_.bond_damping;
+    for (std::size_t first = 0; first < order.size();) {
+        std::size_t last = first;
+        while (last < order.size() && pairOf(order[last]) == pairOf(order[first])) ++last;
+        const VoronoiBond& head = mesh.bonds[order[first]];
+        const bool swapped = head.cellI > head.cellJ;
+        const int ci = swapped ? head.cellJ : head.cellI, cj = swapped ? head.cellI : head.cellJ;
+        if (ci == cj || ci < 0 || cj >= mesh.nCells())
+            throw UserError("the Voronoi mesh has an invalid bond");
+        // Outward normals of each cell's face (cell J's face normal from the mesh when known).
+        const Vec3 normal_I = head.normalI;
+        const Vec3 normal_J =
+            head.faceJ >= 0 && head.faceJ < mesh.nFaces() ? mesh.faceNormal[head.faceJ] : -normal_I;
+        const Mat3 Ri = rotationMatrix(cells_.orientation[ci]);
+        const Mat3 Rj = rotationMatrix(cells_.orientation[cj]);
+        f.cell_i.push_back(ci);
+        f.cell_j.push_back(cj);
+        f.normal_i.push_back(transposeTimes(Ri, swapped ? normal_J : normal_I));
+        f.normal_j.push_back(transposeTimes(Rj, swapped ? normal_I : normal_J));
+        f.length_i.push_back(swapped ? head.lJ : head.lI);
+        f.length_j.push_back(swapped ? head.lI : head.lJ);
+        f.bond_area.push_back(head.area);
+        // beta in seconds: as given, or from a fraction zeta of the critical damping of one
+        // bond (axial stiffness k = k_n A/(n l_ij) between the reduced mass m*):
+        // c = 2 zeta sqrt(k m*) = beta_eff k  =>  beta_eff = 2 zeta sqrt(m*/k).
+        const double l = head.lI + head.lJ;
+        const double stiffness = bond_material_.normal_modulus * head.area / l;
+        const double reduced_mass = cells_.mass[ci] * cells_.mass[cj] / (cells_.mass[ci] + cells_.mass[cj]);
+        f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
+                                     ? beta
+                                     : 2.0 * beta * std::sqrt(reduced_mass / stiffness));
+        for (std::size_t e = first; e < last; ++e) {
+            const VoronoiBond& bond = mesh.bonds[order[e]];
+            b.anchor_i.push_back(transposeTimes(Ri, bond.point - cells_.position[ci]));
+            b.anchor_j.push_back(transposeTimes(Rj, bond.point - cells_.position[cj]));
+        }
+        const int n_bonds = static_cast<int>(last - first);
+        f.intact_bonds.push_back(n_bonds);
+        f.bond_offset.push_back(f.bond_offset.back() + n_bonds);
+        cells_.initial_bond_count[ci] += n_bonds;
+        cells_.initial_bond_count[cj] += n_bonds;
+        first = last;
+    }
+    const int n_interfaces = f.size(), n_bonds = static_cast<int>(b.anchor_i.size());
+    f.force_on_i.assign(n_interfaces, Vec3{});
+    f.torque_on_i.assign(n_interfaces, Vec3{});
+    f.torque_on_j.assign(n_interfaces, Vec3{});
+    b.stage.assign(n_bonds, bondElastic);
+    b.onset_displacement.assign(n_bonds, 0.0);
+    b.onset_stress.assign(n_bonds, 0.0);
+    b.rupture_displacement.assign(n_bonds, 0.0);
+    b.max_displacement.assign(n_bonds, 0.0);
+    b.damage.assign(n_bonds, 0.0);
+    counters_.bonds = n_bonds;
+}
+
+void DemModel::buildIncidence()
+{
+    const int n = cells_.size();
+    buildCellIncidence(n, interfaces_.cell_i, interfaces_.cell_j, cell_interface_offset_, cell_interfaces_);
+    // Each cell's interfaces sorted by neighbour, for the pair -> interface lookup.
+    neighbour_offset_ = cell_interface_offset_;
+    neighbour_cell_.resize(cell_interfaces_.size());
+    neighbour_interface_.resize(cell_interfaces_.size());
+    for (int c = 0; c < n; ++c) {
+        std::vector<std::pair<int, int>> list;
+        for (int e = cell_interface_offset_[c]; e < cell_interface_offset_[c + 1]; ++e) {
+            const int k = cell_interfaces_[e] / 2;
+            list.emplace_back(interfaces_.cell_i[k] == c ? interfaces_.cell_j[k] : interfaces_.cell_i[k], k);
+        }
+        std::sort(list.begin(), list.end());
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            neighbour_cell_[neighbour_offset_[c] + i] = list[i].first;
+            neighbour_interface_[neighbour_offset_[c] + i] = list[i].second;
+        }
+    }
+    rotation_.resize(n);
+    angular_velocity_world_.resize(n);
+    cell_wall_item_offset_.assign(n + 1, 0);
+    cell_pair_offset_.assign(n + 1, 0);
+}
+
+// ---- Walls ------------------------------------------------------------------
+
+int DemModel::addPlate(const Vec3& point, const Vec3& normal_into_domain, const Vec3& velocity)
+{
+    if (!(norm(normal_into_domain) > 0.0)) throw UserError("a plate needs a non-zero normal");
+    WallState w;
+    w.kind = wallPlate;
+    w.origin = w.initial_origin = point;
+    w.normal = normalised(normal_into_domain);
+    w.velocity = velocity;
+    walls_.push_back(w);
+    triangle_grids_.emplace_back();
+    lists_valid_ = forces_valid_ = false;
+    return nWalls() - 1;
+}
+
+int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
+                            const std::vector<std::array<int, 3>>& triangles, const WallMotion& motion)
+{
+    if (triangles.empty()) throw UserError("a triangulated wall needs at least one triangle");
+    WallState w;
+    w.kind = wallTriSurface;
+    w.first_triangle = static_cast<int>(triangle_vertices_.size() / 3);
+    w.n_triangles = static_cast<int>(triangles.size());
+    std::vector<Vec3> local;
+    for (const auto& t : triangles)
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] < 0 || t[k] >= static_cast<int>(vertices.size()))
+                throw UserError("a triangle of a wall refers to a vertex that does not exist");
+            local.push_back(vertices[t[k]]);
+        }
+    triangle_vertices_.insert(triangle_vertices_.end(), local.begin(), local.end());
+    triangle_grids_.emplace_back(local);
+    walls_.push_back(w);
+    setWallMotion(nWalls() - 1, motion);
+    walls_.back().initial_origin = motion.translation;
+    lists_valid_ = false;
+    return nWalls() - 1;
+}
+
+void DemModel::setWallVelocity(int wall, const Vec3& velocity, const Vec3& angular_velocity)
+{
+    walls_.at(wall).velocity = velocity;
+    walls_.at(wall).angular_velocity = angular_velocity;
+    forces_valid_ = false;
+}
+
+void DemModel::setWallMotion(int wall, const WallMotion& motion)
+{
+    WallState& w = walls_.at(wall);
+    w.origin = motion.translation;
+    w.orientation = normalised(motion.orientation);
+    w.velocity = motion.velocity;
+    w.angular_velocity = motion.angular_velocity;
+    forces_valid_ = false;
+}
+
+void DemModel::setWallState(int wall, const WallState& state)
+{
+    walls_.at(wall) = state;
+    lists_valid_ = forces_valid_ = false;
+}
+
+WallPose DemModel::wallPose(const WallState& w) const
+{
+    WallPose pose;
+    pose.kind = w.kind;
+    pose.origin = w.origin;
+    pose.rotation = rotationMatrix(w.orientation);
+    pose.velocity = w.velocity;
+    pose.angular_velocity = w.angular_velocity;
+    pose.normal = w.normal;
+    pose.first_triangle = w.first_triangle;
+    pose.n_triangles = w.n_triangles;
+    return pose;
+}
+
+void DemModel::moveWalls(double dt)
+{
+    for (WallState& w : walls_) {
+        w.origin += dt * w.velocity;
+        w.orientation = normalised(quatFromRotationVector(dt * w.angular_velocity) * w.orientation);
+    }
+}
+
+// ---- Neighbour lists ---------------------------------------------------------
+
+bool DemModel::neighbourListsStale() const
+{
+    if (!lists_valid_ || wall_origin_at_build_.size() != walls_.size()) return true;
+    double cell_move2 = 0.0;
+    for (int c = 0; c < cells_.size(); ++c)
+        cell_move2 = std::max(cell_move2, norm2(cells_.position[c] - position_at_build_[c]));
+    const double cell_move = std::sqrt(cell_move2);
+    double wall_move = 0.0;
+    for (int w = 0; w < nWalls(); ++w) {
+        double extent = 0.0;
+        for (int t = 3 * walls_[w].first_triangle; t < 3 * (walls_[w].first_triangle + walls_[w].n_triangles);
+             ++t)
+            extent = std::max(extent, norm(triangle_vertices_[t]));
+        wall_move = std::max(
+            wall_move, norm(walls_[w].origin - wall_origin_at_build_[w]) +
+                           extent * rotationAngle(walls_[w].orientation, wall_orientation_at_build_[w]));
+    }
+    return cell_move > 0.5 * skin_ || cell_move + wall_move > skin_ || !(cell_move == cell_move);
+}
+
+void DemModel::rebuildNeighbourLists()
+{
+    const int n = cells_.size();
+    const std::vector<std::pair<int, int>> near =
+        findNearPairs(cells_.position, cells_.bounding_radius, skin_);
+    ContactPairArrays next;
+    next.cell_a.reserve(near.size());
+    std::size_t old = 0;
+    for (const auto& [a, b] : near) {
+        next.cell_a.push_back(a);
+        next.cell_b.push_back(b);
+        // The interface of the pair, if it shares a bonded face.
+        const auto begin = neighbour_cell_.begin() + neighbour_offset_[a];
+        const auto end = neighbour_cell_.begin() + neighbour_offset_[a + 1];
+        const auto found = std::lower_bound(begin, end, b);
+        next.interface.push_back(
+            found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1);
+        // Carry the contact history by key (both lists sorted by (a, b)).
+        while (old < pairs_.cell_a.size() &&
+               std::make_pair(pairs_.cell_a[old], pairs_.cell_b[old]) < std::make_pair(a, b))
+            ++old;
+        const bool kept = old < pairs_.cell_a.size() && pairs_.cell_a[old] == a && pairs_.cell_b[old] == b;
+        next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
+        next.last_normal.push_back(kept ? pairs_.last_normal[old] : Vec3{});
+    }
+    const std::size_t m = near.size();
+    next.force_on_b.assign(m, Vec3{});
+    next.torque_on_a.assign(m, Vec3{});
+    next.torque_on_b.assign(m, Vec3{});
+    next.elastic_energy.assign(m, 0.0);
+    next.damping_power.assign(m, 0.0);
+    next.friction_dissipation.assign(m, 0.0);
+    next.status.assign(m, contactNone);
+    pairs_ = std::move(next);
+    buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
+    counters_.contact_pairs_listed = pairs_.size();
+    buildWallItems();
+    position_at_build_ = cells_.position;
+    wall_origin_at_build_.clear();
+    wall_orientation_at_build_.clear();
+    for (const WallState& w : walls_) {
+        wall_origin_at_build_.push_back(w.origin);
+        wall_orientation_at_build_.push_back(w.orientation);
+    }
+    lists_valid_ = true;
+    ++counters_.neighbour_rebuilds;
+}
+
+void DemModel::buildWallItems()
+{
+    const int n = cells_.size();
+    WallContactArrays next;
+    next.triangle_offset.assign(1, 0);
+    cell_wall_item_offset_.assign(n + 1, 0);
+    std::vector<int> found;
+    std::size_t old = 0;
+    for (int c = 0; c < n; ++c) {
+        for (int w = 0; w < nWalls(); ++w) {
+            const WallState& wall = walls_[w];
+            const double reach = cells_.bounding_radius[c] + skin_;
+            found.clear();
+            if (wall.kind == wallPlate) {
+                if (dot(cells_.position[c] - wall.origin, wall.normal) > reach) continue;
+            } else {
+                const Mat3 R = rotationMatrix(wall.orientation);
+                triangle_grids_[w].query(transposeTimes(R, cells_.position[c] - wall.origin), reach, found);
+                if (found.empty()) continue;
+            }
+            next.cell.push_back(c);
+            next.wall.push_back(w);
+            for (int t : found) next.triangles.push_back(wall.first_triangle + t);
+            next.triangle_offset.push_back(static_cast<int>(next.triangles.size()));
+            while (old < wall_items_.cell.size() &&
+                   std::make_pair(wall_items_.cell[old], wall_items_.wall[old]) < std::make_pair(c, w))
+                ++old;
+            const bool kept =
+                old < wall_items_.cell.size() && wall_items_.cell[old] == c && wall_items_.wall[old] == w;
+            next.tangential_spring.push_back(kept ? wall_items_.tangential_spring[old] : Vec3{});
+            next.last_normal.push_back(kept ? wall_items_.last_normal[old] : Vec3{});
+        }
+        cell_wall_item_offset_[c + 1] = static_cast<int>(next.cell.size());
+    }
+    const std::size_t m = next.cell.size();
+    next.force_on_cell.assign(m, Vec3{});
+    next.torque_on_cell.assign(m, Vec3{});
+    next.elastic_energy.assign(m, 0.0);
+    next.damping_power.assign(m, 0.0);
+    next.friction_dissipation.assign(m, 0.0);
+    next.wall_power.assign(m, 0.0);
+    next.status.assign(m, contactNone);
+    wall_items_ = std::move(next);
+}
+
+// ---- Forces -------------------------------------------------------------------
+
+void DemModel::refreshKinematicCaches()
+{
+    const int n = cells_.size();
+#pragma omp parallel for schedule(static)
+    for (int c = 0; c < n; ++c) {
+        rotation_[c] = rotationMatrix(cells_.orientation[c]);
+        angular_velocity_world_[c] = rotation_[c] * cells_.angular_velocity[c];
+    }
+    wall_poses_.clear();
+    for (const WallState& w : walls_) wall_poses_.push_back(wallPose(w));
+}
+
+BondKernelArgs DemModel::bondArgs()
+{
+    BondKernelArgs a;
+    a.material = bond_material_;
+    a.n_interfaces = interfaces_.size();
+    a.position = cells_.position.data();
+    a.velocity = cells_.velocity.data();
+    a.angular_velocity_world = angular_velocity_world_.data();
+    a.rotation = rotation_.data();
+    a.cell_i = interfaces_.cell_i.data();
+    a.cell_j = interfaces_.cell_j.data();
+    a.bond_offset = interfaces_.bond_offset.data();
+    a.normal_i_body = interfaces_.normal_i.data();
+    a.normal_j_body = interfaces_.normal_j.data();
+    a.length_i = interfaces_.length_i.data();
+    a.length_j = interfaces_.length_j.data();
+    a.bond_area = interfaces_.bond_area.data();
+    a.damping_beta = interfaces_.damping_beta.data();
+    a.intact_bonds = interfaces_.intact_bonds.data();
+    a.force_on_i = interfaces_.force_on_i.data();
+    a.torque_on_i = interfaces_.torque_on_i.data();
+    a.torque_on_j = interfaces_.torque_on_j.data();
+    a.anchor_i_body = bonds_.anchor_i.data();
+    a.anchor_j_body = bonds_.anchor_j.data();
+    a.stage = bonds_.stage.data();
+    a.onset_displacement = bonds_.onset_displacement.data();
+    a.onset_stress = bonds_.onset_stress.data();
+    a.rupture_displacement = bonds_.rupture_displacement.data();
+    a.max_displacement = bonds_.max_displacement.data();
+    a.damage = bonds_.damage.data();
+    bond_block_sums_.resize((a.n_interfaces + a.block_size - 1) / a.block_size);
+    a.block_sums = bond_block_sums_.data();
+    return a;
+}
+
+CellContactView DemModel::cellView() const
+{
+    CellContactView v;
+    v.position = cells_.position.data();
+    v.velocity = cells_.velocity.data();
+    v.angular_velocity_world = angular_velocity_world_.data();
+    v.rotation = rotation_.data();
+    v.mass = cells_.mass.data();
+    v.dilation_radius = cells_.dilation_radius.data();
+    v.bounding_radius = cells_.bounding_radius.data();
+    v.core_vertex_offset = cells_.core_vertex_offset.data();
+    v.core_vertices = cells_.core_vertices.data();
+    return v;
+}
+
+void DemModel::runBondKernel(double dt)
+{
+    bond_runner_(bondArgs());
+    double strain = 0.0;
+    for (const BondBlockSums& s : bond_block_sums_) {
+        strain += s.strain_energy;
+        energies_.bond_damping += s.damping_power * dt;
+        energies_.fracture += s.fracture_dissipation;
+    }
+    energies_.bond_strain = strain;
+    int broken = 0, open = 0;
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        broken += interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
+        open += interfaces_.intact_bonds[k] == 0;
+    }
+    counters_.bonds_broken = broken;
+    counters_.interfaces_open = open;
+}
+
+namespace {
+
+template <class Arrays>
+ContactItemOutputs itemOutputs(Arrays& items)
+{
+    ContactItemOutputs o;
+    o.tangential_spring = items.tangential_spring.data();
+    o.last_normal = items.last_normal.data();
+    o.elastic_energy = items.elastic_energy.data();
+    o.damping_power = items.damping_power.data();
+    o.friction_dissipation = items.friction_dissipation.data();
+    o.status = items.status.data();
+    return o;
+}
+
+// Sums over contact items in item order (deterministic); returns the active count.
+template <class Arrays>
+int sumContactEnergies(const Arrays& items, double dt, DemEnergies& energies, int& intersections)
+{
+    int active = 0;
+    for (int i = 0; i < items.size(); ++i) {
+        if (items.status[i] == contactNone) continue;
+        ++active;
+        intersections += items.status[i] == contactCoresIntersect;
+        energies.contact_elastic += items.elastic_energy[i];
+        energies.contact_damping += items.damping_power[i] * dt;
+        energies.friction += items.friction_dissipation[i];
+    }
+    return active;
+}
+
+}  // namespace
+
+void DemModel::runContactKernels(double dt)
+{
+    PairKernelArgs pa;
+    pa.constants = rock_rock_;
+    pa.dt = dt;
+    pa.n_pairs = pairs_.size();
+    pa.cells = cellView();
+    pa.intact_bonds = interfaces_.intact_bonds.data();
+    pa.cell_a = pairs_.cell_a.data();
+    pa.cell_b = pairs_.cell_b.data();
+    pa.interface = pairs_.interface.data();
+    pa.items = itemOutputs(pairs_);
+    pa.force_on_b = pairs_.force_on_b.data();
+    pa.torque_on_a = pairs_.torque_on_a.data();
+    pa.torque_on_b = pairs_.torque_on_b.data();
+    contact_runners_.pairs(pa);
+
+    WallKernelArgs wa;
+    wa.constants = rock_steel_;
+    wa.dt = dt;
+    wa.n_items = wall_items_.size();
+    wa.cells = pa.cells;
+    wa.walls = wall_poses_.data();
+    wa.triangle_vertices = triangle_vertices_.data();
+    wa.item_cell = wall_items_.cell.data();
+    wa.item_wall = wall_items_.wall.data();
+    wa.item_triangle_offset = wall_items_.triangle_offset.data();
+    wa.item_triangles = wall_items_.triangles.data();
+    wa.items = itemOutputs(wall_items_);
+    wa.force_on_cell = wall_items_.force_on_cell.data();
+    wa.torque_on_cell = wall_items_.torque_on_cell.data();
+    wa.wall_power = wall_items_.wall_power.data();
+    contact_runners_.walls(wa);
+
+    energies_.contact_elastic = 0.0;
+    counters_.core_intersections = 0;
+    counters_.contacts_active = sumContactEnergies(pairs_, dt, energies_, counters_.core_intersections);
+    counters_.wall_contacts_active =
+        sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
+    for (int w = 0; w < nWalls(); ++w) walls_[w].reaction = Vec3{};
+    for (int i = 0; i < wall_items_.size(); ++i) {
+        walls_[wall_items_.wall[i]].reaction -= wall_items_.force_on_cell[i];
+        energies_.wall_work += wall_items_.wall_power[i] * dt;
+    }
+}
+
+// Each cell sums the items it takes part in, in a fixed order: no atomics, and
+// the same floating-point sums whatever the number of threads.
+void DemModel::gatherForces()
+{
+    const int n = cells_.size();
+    const Vec3 gravity = parameters_.gravity;
+#pragma omp parallel for schedule(static)
+    for (int c = 0; c < n; ++c) {
+        Vec3 force = cells_.mass[c] * gravity, torque;
+        for (int e = cell_interface_offset_[c]; e < cell_interface_offset_[c + 1]; ++e) {
+            const int k = cell_interfaces_[e] >> 1;
+            if (cell_interfaces_[e] & 1) {
+                force -= interfaces_.force_on_i[k];
+                torque += interfaces_.torque_on_j[k];
+            } else {
+                force += interfaces_.force_on_i[k];
+                torque += interfaces_.torque_on_i[k];
+            }
+        }
+        for (int e = cell_pair_offset_[c]; e < cell_pair_offset_[c + 1]; ++e) {
+            const int p = cell_pairs_[e] >> 1;
+            if (cell_pairs_[e] & 1) {
+                force += pairs_.force_on_b[p];
+                torque += pairs_.torque_on_b[p];
+            } else {
+                force -= pairs_.force_on_b[p];
+                torque += pairs_.torque_on_a[p];
+            }
+        }
+        for (int i = cell_wall_item_offset_[c]; i < cell_wall_item_offset_[c + 1]; ++i) {
+            force += wall_items_.force_on_cell[i];
+            torque += wall_items_.torque_on_cell[i];
+        }
+        cells_.force[c] = force;
+        cells_.torque[c] = torque;
+    }
+}
+
+void DemModel::computeForces(double dt)
+{
+    refreshKinematicCaches();
+    if (neighbourListsStale()) rebuildNeighbourLists();
+    runBondKernel(dt);
+    runContactKernels(dt);
+    gatherForces();
+    forces_valid_ = true;
+}
+
+void DemModel::evaluateForces(double dt)
+{
+    computeForces(dt);
+    measureCells(0.0);
+}
+
+// ---- Integration ----------------------------------------------------------------
+
+// First half kick and drift (velocity Verlet) and the rotation update: forward
+// Euler on SO(3) with the exact rotation of the body-frame angular momentum by
+// the same increment (the gyroscopic term), which keeps |L| and, without torque,
+// the world angular momentum exactly (docs/theory-dem.md §Integration).
+void DemModel::kickDrift(double dt)
+{
+    const int n = cells_.size();
+    const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
+    cell_block_sums_.assign(n_blocks, CellBlockSums{});
+    const Vec3 gravity = parameters_.gravity;
+#pragma omp parallel for schedule(static)
+    for (int block = 0; block < n_blocks; ++block) {
+        double gravity_work = 0.0;
+        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
+            const double mass = cells_.mass[c];
+            cells_.velocity[c] += (0.5 * dt / mass) * cells_.force[c];
+            const Vec3 step = dt * cells_.velocity[c];
+            cells_.position[c] += step;
+            gravity_work += mass * dot(gravity, step);
+
+            const Vec3 inertia = cells_.principal_inertia[c];
+            const Vec3 omega = cells_.angular_velocity[c];
+            const Quat increment = quatFromRotationVector(dt * omega);
+            cells_.orientation[c] = normalised(cells_.orientation[c] * increment);
+            const Vec3 momentum{inertia.x * omega.x, inertia.y * omega.y, inertia.z * omega.z};
+            const Vec3 turned = transposeTimes(rotationMatrix(increment), momentum);
+            cells_.angular_velocity[c] = {turned.x / inertia.x, turned.y / inertia.y, turned.z / inertia.z};
+        }
+        cell_block_sums_[block].gravity_work = gravity_work;
+    }
+    for (const CellBlockSums& s : cell_block_sums_) energies_.gravity_work += s.gravity_work;
+}
+
+// Second half kick, and the torque's forward Euler increment of the angular velocity.
+void DemModel::kick(double dt)
+{
+    const int n = cells_.size();
+#pragma omp parallel for schedule(static)
+    for (int c = 0; c < n; ++c) {
+        cells_.velocity[c] += (0.5 * dt / cells_.mass[c]) * cells_.force[c];
+        const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
+        const Vec3 inertia = cells_.principal_inertia[c];
+        cells_.angular_velocity[c] +=
+            dt * Vec3{torque_body.x / inertia.x, torque_body.y / inertia.y, torque_body.z / inertia.z};
+    }
+}
+
+// Kinetic energy and the finiteness check, summed per block in a fixed order.
+void DemModel::measureCells(double sync_dt)
+{
+    const int n = cells_.size();
+    const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
+    cell_block_sums_.assign(n_blocks, CellBlockSums{});
+#pragma omp parallel for schedule(static)
+    for (int block = 0; block < n_blocks; ++block) {
+        CellBlockSums s;
+        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
+            // Angular velocities live at half steps (forward Euler in the torque after the
+            // orientation update = leapfrog staggering); the energy uses the synchronised value.
+            const Vec3 inertia = cells_.principal_inertia[c];
+            const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
+            const Vec3 w = cells_.angular_velocity[c] - (0.5 * sync_dt) * Vec3{torque_body.x / inertia.x,
+                                                                               torque_body.y / inertia.y,
+                                                                               torque_body.z / inertia.z};
+            s.kinetic_translation += 0.5 * cells_.mass[c] * norm2(cells_.velocity[c]);
+            s.kinetic_rotation +=
+                0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
+            const double check = norm2(cells_.position[c]) + norm2(cells_.velocity[c]) + norm2(w);
+            if (!std::isfinite(check) && s.non_finite_cell < 0) s.non_finite_cell = c;
+        }
+        cell_block_sums_[block] = s;
+    }
+    energies_.kinetic_translation = energies_.kinetic_rotation = 0.0;
+    int non_finite = -1;
+    for (const CellBlockSums& s : cell_block_sums_) {
+        energies_.kinetic_translation += s.kinetic_translation;
+        energies_.kinetic_rotation += s.kinetic_rotation;
+        if (non_finite < 0) non_finite = s.non_finite_cell;
+    }
+    // A state set by the caller is an energy input: the balance is measured from here.
+    if (rebase_energy_) {
+        initial_balance_ = energies_.balance();
+        energy_scale_ = 0.0;
+        rebase_energy_ = false;
+    }
+    updateStatus(non_finite);
+}
+
+void DemModel::updateStatus(int non_finite_cell)
+{
+    status_ = DemStatus{};
+    status_.step = counters_.steps;
+    status_.time = time_;
+    status_.cell = non_finite_cell;
+    const DemEnergies& e = energies_;
+    energy_scale_ = std::max(energy_scale_, e.kinetic() + e.stored() + e.dissipated() +
+                                                std::fabs(e.wall_work) + std::fabs(e.gravity_work));
+    status_.energy_scale = energy_scale_;
+    status_.energy_error = e.balance() - initial_balance_;
+    if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
+        status_.code = DemStatusCode::nonFiniteState;
+    else if (status_.energy_error > parameters_.energy_growth_tolerance * energy_scale_ &&
+             status_.energy_error > 0.0)
+        status_.code = DemStatusCode::energyGrowth;
+}
+
+double DemModel::step(double dt)
+{
+    if (!forces_valid_) computeForces(0.0);
+    kickDrift(dt);
+    moveWalls(dt);
+    computeForces(dt);
+    kick(dt);
+    time_ += dt;
+    ++counters_.steps;
+    measureCells(dt);
+    return time_;
+}
+
+// ---- State access -----------------------------------------------------------------
+
+namespace {
+
+void requireSize(std::size_t got, int expected, const char* what)
+{
+    if (static_cast<int>(got) != expected) {
+        std::ostringstream message;
+        message << "restart data does not match the model: " << what << " has " << got
+                << " entries, expected " << expected;
+        throw UserError(message.str());
+    }
+}
+
+}  // namespace
+
+void DemModel::setCellState(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
+                            const std::vector<Quat>& orientation, const std::vector<Vec3>& angular_velocity)
+{
+    const int n = cells_.size();
+    requireSize(position.size(), n, "cell positions");
+    requireSize(velocity.size(), n, "cell velocities");
+    requireSize(orientation.size(), n, "cell orientations");
+    requireSize(angular_velocity.size(), n, "cell angular velocities");
+    cells_.position = position;
+    cells_.velocity = velocity;
+    cells_.orientation = orientation;
+    cells_.angular_velocity = angular_velocity;
+    lists_valid_ = forces_valid_ = false;
+    rebase_energy_ = true;
+}
+
+void DemModel::setBondHistory(const BondArrays& history)
+{
+    const int n = bonds_.size();
+    requireSize(history.stage.size(), n, "bond stages");
+    requireSize(history.onset_displacement.size(), n, "bond onset displacements");
+    requireSize(history.onset_stress.size(), n, "bond onset stresses");
+    requireSize(history.rupture_displacement.size(), n, "bond rupture displacements");
+    requireSize(history.max_displacement.size(), n, "bond maximum displacements");
+    requireSize(history.damage.size(), n, "bond damage");
+    bonds_.stage = history.stage;
+    bonds_.onset_displacement = history.onset_displacement;
+    bonds_.onset_stress = history.onset_stress;
+    bonds_.rupture_displacement = history.rupture_displacement;
+    bonds_.max_displacement = history.max_displacement;
+    bonds_.damage = history.damage;
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        int intact = 0;
+        for (int b = interfaces_.bond_offset[k]; b < interfaces_.bond_offset[k + 1]; ++b)
+            intact += bonds_.stage[b] != bondBroken;
+        interfaces_.intact_bonds[k] = intact;
+    }
+    forces_valid_ = false;
+}
+
+void DemModel::setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items)
+{
+    // Only keys and springs matter: the next rebuild carries them into fresh lists.
+    pairs_ = pairs;
+    wall_items_ = wall_items;
+    lists_valid_ = forces_valid_ = false;
+}
+
+void DemModel::setClock(double time, long steps, const DemEnergies& energies, double initial_balance)
+{
+    time_ = time;
+    counters_.steps = steps;
+    energies_ = energies;
+    initial_balance_ = initial_balance;
+    rebase_energy_ = false;
+}
+
+void DemModel::setCellPose(int cell, const Vec3& position, const Quat& orientation)
+{
+    cells_.position.at(cell) = position;
+    cells_.orientation.at(cell) = normalised(orientation);
+    forces_valid_ = false;
+    rebase_energy_ = true;
+}
+
+void DemModel::setCellVelocity(int cell, const Vec3& velocity, const Vec3& angular_velocity_body)
+{
+    cells_.velocity.at(cell) = velocity;
+    cells_.angular_velocity.at(cell) = angular_velocity_body;
+    forces_valid_ = false;
+    rebase_energy_ = true;
+}
+
+std::vector<double> DemModel::cellDamage() const
+{
+    std::vector<int> broken(cells_.size(), 0);
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const int n_broken =
+            interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
+        broken[interfaces_.cell_i[k]] += n_broken;
+        broken[interfaces_.cell_j[k]] += n_broken;
+    }
+    std::vector<double> damage(cells_.size(), 0.0);
+    for (int c = 0; c < cells_.size(); ++c)
+        if (cells_.initial_bond_count[c] > 0) damage[c] = double(broken[c]) / cells_.initial_bond_count[c];
+    return damage;
+}
+
+Vec3 DemModel::angularMomentum(int c) const
+{
+    const Vec3 w = cells_.angular_velocity[c], inertia = cells_.principal_inertia[c];
+    return rotationMatrix(cells_.orientation[c]) * Vec3{inertia.x * w.x, inertia.y * w.y, inertia.z * w.z};
+}
+
+std::size_t DemModel::memoryBytes() const
+{
+    const CellArrays& c = cells_;
+    std::size_t total = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) +
+                        bytes(c.angular_velocity) + bytes(c.force) + bytes(c.torque) + bytes(c.mass) +
+                        bytes(c.principal_inertia) + bytes(c.dilation_radius) + bytes(c.bounding_radius) +
+                        bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.initial_bond_count);
+    const InterfaceArrays& f = interfaces_;
+    total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
+             bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
+             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.force_on_i) + bytes(f.torque_on_i) +
+             bytes(f.torque_on_j);
+    const BondArrays& b = bonds_;
+    total += bytes(b.anchor_i) + bytes(b.anchor_j) + bytes(b.stage) + bytes(b.onset_displacement) +
+             bytes(b.onset_stress) + bytes(b.rupture_displacement) + bytes(b.max_displacement) +
+             bytes(b.damage);
+    const ContactPairArrays& p = pairs_;
+    total += bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
+             bytes(p.last_normal) + bytes(p.force_on_b) + bytes(p.torque_on_a) + bytes(p.torque_on_b) +
+             bytes(p.elastic_energy) + bytes(p.damping_power) + bytes(p.friction_dissipation) +
+             bytes(p.status);
+    total += bytes(rotation_) + bytes(angular_velocity_world_) + bytes(cell_interface_offset_) +
+             bytes(cell_interfaces_) + bytes(cell_pair_offset_) + bytes(cell_pairs_) +
+             bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) + bytes(neighbour_cell_) +
+             bytes(neighbour_interface_) + bytes(position_at_build_);
+    return total;
+}
+
+}  // namespace rockfrac

@@ -1,0 +1,207 @@
+#pragma once
+// The bonded Voronoi DEM (physics.md §3, docs/theory-dem.md): rigid dilated
+// polyhedral cells glued at their shared faces by the bonds of Eqs. 5–20, Hertz–
+// Mindlin contact once the bonds of a face are gone, rigid walls, and an explicit
+// integrator (velocity Verlet for translation, forward Euler on SO(3) for rotation).
+//
+// Typical use (the bondedDemFoam application):
+//     DemModel model(mesh, parameters);
+//     int bottom = model.addPlate({0, 0, 0}, {0, 0, 1});
+//     int top = model.addPlate({0, 0, h}, {0, 0, -1}, {0, 0, -0.25});
+//     double dt = 0.02 * model.rayleighTimeStep();
+//     while (...) { model.step(dt); if (!model.status().ok()) fail(model.status().message()); }
+//
+// Kernels (bond, contact pair, wall item, gather, integration) are RF_HD
+// functions over raw arrays; per-item forces are summed per cell in a fixed order,
+// so results are bitwise independent of the OpenMP thread count.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "dem/bondLaw.hpp"
+#include "dem/contactLaw.hpp"
+#include "dem/demParameters.hpp"
+#include "dem/demState.hpp"
+#include "dem/neighbourSearch.hpp"
+#include "voronoi/voronoiMesh.hpp"
+
+namespace rockfrac {
+
+enum class DemStatusCode { ok, nonFiniteState, energyGrowth };
+
+// What the last step found; the caller turns it into a message naming the step.
+struct DemStatus {
+    DemStatusCode code = DemStatusCode::ok;
+    long step = 0;  // step index at which it was found
+    double time = 0.0;
+    double energy_error = 0.0;  // balance minus its initial value [J]
+    double energy_scale = 0.0;  // the largest energy of the run so far [J]
+    int cell = -1;              // a cell with a non-finite state
+
+    bool ok() const { return code == DemStatusCode::ok; }
+    std::string message() const;
+};
+
+struct DemCounters {
+    long steps = 0;
+    long neighbour_rebuilds = 0;
+    int bonds = 0;
+    int bonds_broken = 0;
+    int interfaces_open = 0;       // cell pairs whose every bond is broken
+    int contact_pairs_listed = 0;  // current neighbour list
+    int contacts_active = 0;       // cell–cell contacts with overlap
+    int wall_contacts_active = 0;
+    int core_intersections = 0;  // contacts this step whose cores intersect (fallback normal)
+    int shrunk_cores = 0;        // cells whose erosion failed (shrink fallback)
+};
+
+// Rigid motion of a triangulated wall: x_world = translation + R(orientation) x_wall,
+// velocity field v(x) = velocity + angular_velocity x (x - translation).
+struct WallMotion {
+    Vec3 translation;
+    Quat orientation;
+    Vec3 velocity;
+    Vec3 angular_velocity;
+};
+
+class DemModel {
+public:
+    DemModel(const VoronoiMesh& mesh, const DemParameters& parameters);
+
+    // ---- Walls -------------------------------------------------------------
+    // A rigid plane through point, normal pointing into the domain, moving with velocity.
+    int addPlate(const Vec3& point, const Vec3& normal_into_domain, const Vec3& velocity = {});
+    // Triangles (vertex indices) over vertices given in the wall's own frame.
+    int addTriSurface(const std::vector<Vec3>& vertices, const std::vector<std::array<int, 3>>& triangles,
+                      const WallMotion& motion = {});
+    void setWallVelocity(int wall, const Vec3& velocity, const Vec3& angular_velocity = {});
+    // Pose and velocities at the current time (e.g. a gyrating mantle); the pose then
+    // advances with the velocities during each step until set again.
+    void setWallMotion(int wall, const WallMotion& motion);
+    int nWalls() const { return static_cast<int>(walls_.size()); }
+    const WallState& wall(int w) const { return walls_[w]; }
+    Vec3 wallDisplacement(int w) const { return walls_[w].origin - walls_[w].initial_origin; }
+    Vec3 wallReaction(int w) const { return walls_[w].reaction; }
+
+    // ---- Time stepping -----------------------------------------------------
+    // pi R sqrt(rho/G) / (0.1631 nu + 0.8766), R the smallest volume-equivalent radius.
+    double rayleighTimeStep() const { return rayleigh_time_step_; }
+    // One explicit step; returns the new time. Check status() afterwards.
+    double step(double dt);
+    // Forces at the current state without moving anything (histories advance as in a
+    // step of length dt). For imposed-kinematics studies and after setting a state.
+    void evaluateForces(double dt);
+    const DemStatus& status() const { return status_; }
+    double time() const { return time_; }
+
+    // ---- State (read for output and restart; write back for restart) --------
+    const CellArrays& cells() const { return cells_; }
+    const BondArrays& bonds() const { return bonds_; }
+    const InterfaceArrays& interfaces() const { return interfaces_; }
+    const ContactPairArrays& contactPairs() const { return pairs_; }
+    const WallContactArrays& wallContacts() const { return wall_items_; }
+    const DemEnergies& energies() const { return energies_; }
+    const DemCounters& counters() const { return counters_; }
+    const DemParameters& parameters() const { return parameters_; }
+    const std::vector<Vec3>& triangleVertices() const { return triangle_vertices_; }
+
+    // Restart: the kinematic state, the bond histories, the contact histories (keys
+    // and springs), the walls, time, step count and the energy accumulators. Sizes
+    // must match this model (UserError otherwise); lists are rebuilt, histories
+    // carried by their keys, and forces recomputed.
+    void setCellState(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
+                      const std::vector<Quat>& orientation, const std::vector<Vec3>& angular_velocity);
+    void setBondHistory(const BondArrays& history);  // anchors are kept; history fields replaced
+    void setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items);
+    void setWallState(int wall, const WallState& state);
+    void setClock(double time, long steps, const DemEnergies& energies, double initial_balance);
+    double initialBalance() const { return initial_balance_; }
+
+    // Imposed kinematics (tests, studies): move a cell; forces are stale until the
+    // next evaluateForces() or step(), which also restart the energy balance there
+    // (a state set from outside is an energy input the balance cannot see).
+    void setCellPose(int cell, const Vec3& position, const Quat& orientation);
+    void setCellVelocity(int cell, const Vec3& velocity, const Vec3& angular_velocity_body);
+
+    // ---- Derived outputs ---------------------------------------------------
+    // Fraction of the cell's initial bonds that are broken (0 for a cell without bonds).
+    std::vector<double> cellDamage() const;
+    // Angular momentum of cell c about its centroid, world frame.
+    Vec3 angularMomentum(int c) const;
+    // Estimated memory of the state arrays [bytes].
+    std::size_t memoryBytes() const;
+
+private:
+    void buildCells(const VoronoiMesh& mesh);
+    void buildBonds(const VoronoiMesh& mesh);
+    void buildIncidence();
+    void refreshKinematicCaches();
+    bool neighbourListsStale() const;
+    void rebuildNeighbourLists();
+    void buildWallItems();
+    void computeForces(double dt);
+    void measureCells(double sync_dt);
+    void updateStatus(int non_finite_cell);
+    void runBondKernel(double dt);
+    void runContactKernels(double dt);
+    void gatherForces();
+    void kickDrift(double dt);
+    void kick(double dt);
+    void moveWalls(double dt);
+    BondKernelArgs bondArgs();
+    CellContactView cellView() const;
+    WallPose wallPose(const WallState& wall) const;
+
+    DemParameters parameters_;
+    BondMaterial bond_material_;
+    ContactConstants rock_rock_, rock_steel_;
+    BondLawRunner bond_runner_ = nullptr;
+    ContactLawRunners contact_runners_;
+    double rayleigh_time_step_ = 0.0;
+    double skin_ = 0.0;
+
+    CellArrays cells_;
+    InterfaceArrays interfaces_;
+    BondArrays bonds_;
+    ContactPairArrays pairs_;
+    WallContactArrays wall_items_;
+    std::vector<WallState> walls_;
+    std::vector<Vec3> triangle_vertices_;       // 3 per triangle, each wall's own frame
+    std::vector<TriangleGrid> triangle_grids_;  // per wall (empty for plates)
+
+    // Per-step caches.
+    std::vector<Mat3> rotation_;
+    std::vector<Vec3> angular_velocity_world_;
+    std::vector<WallPose> wall_poses_;
+    // Gather lists (CSR per cell; entry = 2 * item + side, side 1 = the item's second cell).
+    std::vector<int> cell_interface_offset_, cell_interfaces_;
+    std::vector<int> cell_pair_offset_, cell_pairs_;
+    std::vector<int> cell_wall_item_offset_;
+    // Interfaces of each cell sorted by neighbour, for pair -> interface lookup.
+    std::vector<int> neighbour_offset_, neighbour_cell_, neighbour_interface_;
+    // Neighbour-list validity.
+    std::vector<Vec3> position_at_build_;
+    std::vector<Vec3> wall_origin_at_build_;
+    std::vector<Quat> wall_orientation_at_build_;
+    bool lists_valid_ = false;
+    bool forces_valid_ = false;
+    bool rebase_energy_ = false;  // the caller changed the state: restart the balance
+
+    // Deterministic block sums.
+    std::vector<BondBlockSums> bond_block_sums_;
+    struct CellBlockSums {
+        double kinetic_translation = 0.0, kinetic_rotation = 0.0, gravity_work = 0.0;
+        double max_displacement2 = 0.0;
+        int non_finite_cell = -1;
+    };
+    std::vector<CellBlockSums> cell_block_sums_;
+
+    double time_ = 0.0;
+    DemEnergies energies_;
+    double initial_balance_ = 0.0;
+    double energy_scale_ = 0.0;
+    DemCounters counters_;
+    DemStatus status_;
+};
+
+}  // namespace rockfrac

@@ -1,0 +1,70 @@
+#include "dem/demParameters.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace rockfrac {
+
+DampingReading dampingReadingFromName(const std::string& name)
+{
+    if (name == "absolute") return DampingReading::absolute;
+    if (name == "criticalFraction") return DampingReading::criticalFraction;
+    throw UserError("unknown bond damping reading '" + name + "'; known: absolute criticalFraction");
+}
+
+const char* dampingReadingName(DampingReading reading)
+{
+    return reading == DampingReading::absolute ? "absolute" : "criticalFraction";
+}
+
+namespace {
+
+void requirePositive(double value, const char* name)
+{
+    if (!(value > 0.0) || !std::isfinite(value)) {
+        std::ostringstream message;
+        message << "DEM parameter " << name << " must be positive and finite, got " << value;
+        throw UserError(message.str());
+    }
+}
+
+void requireRange(double value, double low, double high, const char* name)
+{
+    if (!(value >= low && value <= high)) {
+        std::ostringstream message;
+        message << "DEM parameter " << name << " must lie in [" << low << ", " << high << "], got " << value;
+        throw UserError(message.str());
+    }
+}
+
+}  // namespace
+
+void DemParameters::validate() const
+{
+    requirePositive(rock_youngs_modulus, "rock Young's modulus");
+    requireRange(rock_poisson_ratio, 0.0, 0.49, "rock Poisson's ratio");
+    requirePositive(rock_density, "rock density");
+    requirePositive(bond_youngs_modulus, "bond Young's modulus");
+    requireRange(bond_poisson_ratio, 0.0, 0.49, "bond Poisson's ratio");
+    requirePositive(bond_tensile_strength, "bond tensile strength");
+    requirePositive(bond_cohesion, "bond cohesion");
+    requireRange(bond_friction, 0.0, 1e3, "bond friction coefficient");
+    requirePositive(fracture_energy_mode_I, "mode I fracture energy G_I");
+    requirePositive(fracture_energy_mode_II, "mode II fracture energy G_II");
+    requirePositive(bk_exponent, "Benzeggagh-Kenane exponent");
+    requireRange(bond_damping, 0.0, 1e3, "bond damping coefficient");
+    requireRange(rupture_tolerance, 0.0, 1.0, "rupture tolerance");
+    requireRange(rock_rock_friction, 0.0, 1e3, "rock-rock friction");
+    requireRange(rock_steel_friction, 0.0, 1e3, "rock-steel friction");
+    requireRange(rock_rock_restitution, 1e-6, 1.0, "rock-rock restitution");
+    requireRange(rock_steel_restitution, 1e-6, 1.0, "rock-steel restitution");
+    requirePositive(steel_youngs_modulus, "steel Young's modulus");
+    requireRange(steel_poisson_ratio, 0.0, 0.49, "steel Poisson's ratio");
+    requireRange(dilation_radius, 0.0, 1e30, "dilation radius");
+    requireRange(skin_distance, 0.0, 1e30, "skin distance");
+    requirePositive(energy_growth_tolerance, "energy growth tolerance");
+}
+
+}  // namespace rockfrac

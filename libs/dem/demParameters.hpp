@@ -1,0 +1,70 @@
+#pragma once
+// Parameters of the bonded Voronoi DEM (physics.md §3.3–3.4).
+//
+// A plain struct that the application fills from constant/rockProperties and
+// constant/loading. The defaults are the paper's values (Table 2, and Table 3
+// for limestone) so that a test or a study states only what it changes; the
+// dictionaries remain the place where a case records its parameters.
+#include <string>
+
+#include "core/vec3.hpp"
+
+namespace rockfrac {
+
+// How the bond damping coefficient beta of Eqs. 18–19 is read (physics.md,
+// "Open question — the unit of beta"; docs/theory-dem.md §Damping).
+enum class DampingReading {
+    absolute,         // beta in seconds, used as printed in Eqs. 18–19
+    criticalFraction  // beta = zeta, a fraction of each bond's critical damping
+};
+
+// "absolute" / "criticalFraction"; anything else is a UserError naming both.
+DampingReading dampingReadingFromName(const std::string& name);
+const char* dampingReadingName(DampingReading reading);
+
+struct DemParameters {
+    // Rock (the cells): mass, inertia and Hertz contact (Table 2).
+    double rock_youngs_modulus = 77e9;  // [Pa]
+    double rock_poisson_ratio = 0.21;   // [-]
+    double rock_density = 2540.0;       // [kg/m^3]
+
+    // Bonds (Eqs. 5–20; Table 2 and Table 3 limestone).
+    std::string bond_law = "voronoiQNSC";
+    double bond_youngs_modulus = 46e9;      // E of Eq. 7 [Pa]
+    double bond_poisson_ratio = 0.25;       // nu of Eqs. 7–8 [-]
+    double bond_tensile_strength = 28e6;    // sigma-bar of Eq. 12 [Pa]
+    double bond_cohesion = 42e6;            // C of tau-bar = C - mu sigma [Pa]
+    double bond_friction = 0.8;             // mu = tan(phi) of tau-bar [-]
+    double fracture_energy_mode_I = 10.0;   // G_I [N/m]
+    double fracture_energy_mode_II = 10.0;  // G_II [N/m]
+    double bk_exponent = 2.0;               // eta of Benzeggagh–Kenane [-]
+    double bond_damping = 1e-4;             // beta: seconds or fraction, see damping_reading
+    DampingReading damping_reading = DampingReading::absolute;
+    // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
+    double rupture_tolerance = 1e-6;  // [-], relative to d_e0
+
+    // Contacts (Hertz–Mindlin, Table 2).
+    std::string contact_law = "hertzMindlin";
+    double rock_rock_friction = 0.6;
+    double rock_rock_restitution = 0.15;
+    double rock_steel_friction = 0.95;
+    double rock_steel_restitution = 0.3;
+    double steel_youngs_modulus = 210e9;  // [Pa]
+    double steel_poisson_ratio = 0.3;     // [-]
+
+    // Dilated polyhedra: 0 means "take VoronoiMesh::dilationRadius".
+    double dilation_radius = 0.0;  // r_d [m]
+    // Verlet skin of the neighbour lists: 0 means "take r_d".
+    double skin_distance = 0.0;  // [m]
+
+    Vec3 gravity{0.0, 0.0, -9.81};  // [m/s^2]
+
+    // Safety: the energy balance error that is called "growing without input",
+    // relative to the largest energy scale of the run (docs/theory-dem.md §Safety).
+    double energy_growth_tolerance = 0.1;
+
+    // Throws UserError naming the first impossible value.
+    void validate() const;
+};
+
+}  // namespace rockfrac

@@ -1,0 +1,120 @@
+#pragma once
+// The whole state of a bonded DEM run as structure-of-arrays: what the kernels
+// read and write, what a restart file must hold, and what VTK output shows.
+//
+// Frames: "body" is the cell's principal frame (origin at the centroid, axes the
+// principal axes of inertia); x_world = position + R(orientation) x_body.
+#include <vector>
+
+#include "core/vec3.hpp"
+#include "dem/contactLaw.hpp"
+#include "dem/quat.hpp"
+
+namespace rockfrac {
+
+struct CellArrays {
+    // Dynamic state (restart).
+    std::vector<Vec3> position;          // centroid [m]
+    std::vector<Vec3> velocity;          // [m/s]
+    std::vector<Quat> orientation;       // body -> world
+    std::vector<Vec3> angular_velocity;  // body frame [rad/s]
+    // Derived each step.
+    std::vector<Vec3> force;   // total force incl. gravity, world [N]
+    std::vector<Vec3> torque;  // about the centroid, world [N m]
+    // Constant per cell.
+    std::vector<double> mass;             // [kg]
+    std::vector<Vec3> principal_inertia;  // [kg m^2]
+    std::vector<double> dilation_radius;  // r_d [m]
+    std::vector<double> bounding_radius;  // of the dilated core about the centroid [m]
+    std::vector<int> core_vertex_offset;  // core of cell c: [offset[c], offset[c+1])
+    std::vector<Vec3> core_vertices;      // eroded cell, body frame [m]
+    std::vector<int> initial_bond_count;  // bonds the cell started with
+
+    int size() const { return static_cast<int>(mass.size()); }
+};
+
+// Cell pairs that share a bonded face. Interface k owns bonds [bond_offset[k], bond_offset[k+1]).
+struct InterfaceArrays {
+    std::vector<int> cell_i, cell_j;  // cell_i < cell_j
+    std::vector<int> bond_offset;
+    std::vector<int> intact_bonds;           // bonds with D < 1; 0 switches the pair's contact on
+    std::vector<Vec3> normal_i, normal_j;    // outward face normals, each in its cell's body frame
+    std::vector<double> length_i, length_j;  // l_i, l_j [m]
+    std::vector<double> bond_area;           // A/n [m^2]
+    std::vector<double> damping_beta;        // beta of Eqs. 18–19 in seconds after the chosen reading [s]
+    std::vector<Vec3> force_on_i, torque_on_i, torque_on_j;  // sums over the interface's bonds
+
+    int size() const { return static_cast<int>(cell_i.size()); }
+};
+
+struct BondArrays {
+    std::vector<Vec3> anchor_i, anchor_j;  // anchor points in the body frames of cells i and j [m]
+    // Damage history (Algorithm 1); stage: BondStage (elastic = "init" still true).
+    std::vector<unsigned char> stage;
+    std::vector<double> onset_displacement;    // d_e0 [m]
+    std::vector<double> onset_stress;          // sigma_e0 [Pa]
+    std::vector<double> rupture_displacement;  // d_f [m]
+    std::vector<double> max_displacement;      // d_max [m]
+    std::vector<double> damage;                // D
+
+    int size() const { return static_cast<int>(stage.size()); }
+};
+
+// Cell–cell contact candidates of the current neighbour list, sorted by (cell_a, cell_b).
+struct ContactPairArrays {
+    std::vector<int> cell_a, cell_b, interface;
+    std::vector<Vec3> tangential_spring, last_normal;  // history, carried across rebuilds by (a, b)
+    std::vector<Vec3> force_on_b, torque_on_a, torque_on_b;
+    std::vector<double> elastic_energy, damping_power, friction_dissipation;
+    std::vector<unsigned char> status;  // ContactStatus
+
+    int size() const { return static_cast<int>(cell_a.size()); }
+};
+
+// Cell–wall contact candidates, sorted by (cell, wall).
+struct WallContactArrays {
+    std::vector<int> cell, wall;
+    std::vector<int> triangle_offset, triangles;       // candidate triangles (tri surfaces)
+    std::vector<Vec3> tangential_spring, last_normal;  // history, carried by (cell, wall)
+    std::vector<Vec3> force_on_cell, torque_on_cell;
+    std::vector<double> elastic_energy, damping_power, friction_dissipation, wall_power;
+    std::vector<unsigned char> status;
+
+    int size() const { return static_cast<int>(cell.size()); }
+};
+
+// Energy bookkeeping [J]. Balance: kinetic + stored + dissipated - external work = constant.
+struct DemEnergies {
+    double kinetic_translation = 0.0;
+    double kinetic_rotation = 0.0;
+    double bond_strain = 0.0;      // recoverable elastic energy of the bonds
+    double contact_elastic = 0.0;  // Hertz normal + tangential springs
+    double bond_damping = 0.0;     // cumulative dashpot dissipation of the bonds
+    double contact_damping = 0.0;  // cumulative restitution damping of the contacts
+    double friction = 0.0;         // cumulative Coulomb sliding
+    double fracture = 0.0;         // cumulative damage dissipation (-> G_f A/n per broken bond)
+    double wall_work = 0.0;        // cumulative work done on the cells by the walls
+    double gravity_work = 0.0;     // cumulative work done on the cells by gravity
+
+    double kinetic() const { return kinetic_translation + kinetic_rotation; }
+    double stored() const { return bond_strain + contact_elastic; }
+    double dissipated() const { return bond_damping + contact_damping + friction + fracture; }
+    double externalWork() const { return wall_work + gravity_work; }
+    // Should stay at its initial value (zero for a run started at rest and unloaded).
+    double balance() const { return kinetic() + stored() + dissipated() - externalWork(); }
+};
+
+struct WallState {
+    int kind = wallPlate;
+    Vec3 origin;             // plate point / surface pivot, world [m]
+    Quat orientation;        // surface frame -> world
+    Vec3 velocity;           // of the origin [m/s]
+    Vec3 angular_velocity;   // world, about the origin [rad/s]
+    Vec3 normal;             // plates: unit normal into the domain
+    Vec3 initial_origin;     // displacement = origin - initial_origin
+    Vec3 reaction;           // force the cells exert on the wall, this step [N]
+    int first_triangle = 0;  // into DemModel's triangle vertex array (3 per triangle)
+    int n_triangles = 0;
+};
+
+}  // namespace rockfrac

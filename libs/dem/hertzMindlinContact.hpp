@@ -1,0 +1,65 @@
+#pragma once
+// Hertz–Mindlin (no slip) contact with restitution damping and a Coulomb-capped
+// incremental tangential spring (physics.md §3.3), applied between dilated
+// cells with the dilation radius as the contact radius.
+#include <cmath>
+
+#include "dem/contactLaw.hpp"
+
+namespace rockfrac {
+
+struct HertzMindlinLaw {
+    RF_HD static ContactOutput evaluate(const ContactConstants& k, const ContactInput& in,
+                                        Vec3& tangential_spring)
+    {
+        ContactOutput out;
+        const Vec3& n = in.normal;
+        const double contact_radius = std::sqrt(in.effective_radius * in.overlap);   // sqrt(R* delta)
+        const double normal_stiffness = 2.0 * k.effective_modulus * contact_radius;  // S_n
+        const double tangential_stiffness = 8.0 * k.effective_shear_modulus * contact_radius;  // S_t
+        // Viscous coefficients from the restitution: -2 sqrt(5/6) beta_e sqrt(S m*) (beta_e < 0).
+        const double damping_factor = -2.0 * std::sqrt(5.0 / 6.0) * k.restitution_beta;
+        const double normal_damping = damping_factor * std::sqrt(normal_stiffness * in.effective_mass);
+        const double tangential_damping =
+            damping_factor * std::sqrt(tangential_stiffness * in.effective_mass);
+
+        const double normal_velocity = dot(in.relative_velocity, n);  // > 0 when separating
+        const Vec3 tangential_velocity = in.relative_velocity - normal_velocity * n;
+        const double elastic_normal_force = (4.0 / 3.0) * k.effective_modulus * contact_radius * in.overlap;
+        double normal_force = elastic_normal_force - normal_damping * normal_velocity;
+        if (normal_force < 0.0)
+            normal_force = 0.0;  // a contact pushes, never pulls
+        else
+            out.damping_power = normal_damping * normal_velocity * normal_velocity;
+
+        // The stored spring is turned into the current tangent plane (magnitude kept),
+        // then incremented by -S_t times the tangential slip of this step.
+        Vec3 spring = tangential_spring - dot(tangential_spring, n) * n;
+        const double kept = norm(spring);
+        if (kept > 0.0) spring *= norm(tangential_spring) / kept;
+        spring -= (tangential_stiffness * in.dt) * tangential_velocity;
+        Vec3 tangential_force = spring - tangential_damping * tangential_velocity;
+        const double limit = k.friction * normal_force;
+        const double spring_magnitude = norm(spring);
+        if (spring_magnitude > limit) {
+            // Sliding: the spring is capped at mu F_n; the excess slip dissipates mu F_n per metre.
+            const double capped = spring_magnitude > 0.0 ? limit / spring_magnitude : 0.0;
+            if (tangential_stiffness > 0.0)
+                out.friction_dissipation = limit * (spring_magnitude - limit) / tangential_stiffness;
+            spring *= capped;
+            tangential_force = spring;
+        } else {
+            out.damping_power += tangential_damping * norm2(tangential_velocity);
+        }
+        tangential_spring = spring;
+        out.force_on_b = normal_force * n + tangential_force;
+        out.elastic_energy = 0.4 * elastic_normal_force * in.overlap +  // 8/15 E* sqrt(R*) delta^(5/2)
+                             (tangential_stiffness > 0.0 ? 0.5 * norm2(spring) / tangential_stiffness : 0.0);
+        return out;
+    }
+};
+
+void runHertzMindlinPairs(const PairKernelArgs& args);
+void runHertzMindlinWalls(const WallKernelArgs& args);
+
+}  // namespace rockfrac

@@ -1,0 +1,10 @@
+#include "dem/voronoiQnscBond.hpp"
+
+namespace rockfrac {
+
+void runVoronoiQnscBonds(const BondKernelArgs& args)
+{
+    runBondKernel<VoronoiQnscLaw>(args);
+}
+
+}  // namespace rockfrac

@@ -1,0 +1,127 @@
+#pragma once
+// The bond law of the paper (section 4.1, Eqs. 5–20, Algorithm 1):
+// linear elastic bond with a quadratic nominal stress criterion (QNSC) for the
+// onset of damage, linear softening in the effective displacement, no damage
+// in compression, and a stiffness-proportional dashpot.
+#include <cmath>
+
+#include "dem/bondLaw.hpp"
+
+namespace rockfrac {
+
+struct VoronoiQnscLaw {
+    // QNSC (Eq. 12) with tau-bar = C - mu sigma; >= 1 at or beyond the onset.
+    // A non-positive Mohr–Coulomb strength (sigma >= C/mu) counts as beyond it.
+    RF_HD static double qnscIndex(const BondMaterial& m, double sigma, double tau)
+    {
+        const double tensile = sigma > 0.0 ? sigma / m.tensile_strength : 0.0;
+        const double shear_strength = m.cohesion - m.friction * sigma;
+        if (shear_strength <= 0.0) return 2.0;
+        const double shear = tau / shear_strength;
+        return tensile * tensile + shear * shear;
+    }
+
+    // The fraction s in (0, 1] of the current (sigma, tau) at which the QNSC is
+    // exactly 1, assuming the bond was loaded along a straight path from zero
+    // within the step (exact for monotonic proportional loading). The index is
+    // increasing in s, so bisection converges to round-off.
+    RF_HD static double onsetFraction(const BondMaterial& m, double sigma, double tau)
+    {
+        double low = 0.0, high = 1.0;
+        for (int iteration = 0; iteration < 60; ++iteration) {
+            const double mid = 0.5 * (low + high);
+            if (qnscIndex(m, mid * sigma, mid * tau) >= 1.0)
+                high = mid;
+            else
+                low = mid;
+        }
+        return high;
+    }
+
+    // Benzeggagh–Kenane: G_f = G_I + (G_II - G_I) (G_shear/G_total)^eta with the
+    // mode mixity from the tractions at onset, G_shear/G_total = tau^2/(<sigma>^2 + tau^2).
+    RF_HD static double fractureEnergy(const BondMaterial& m, double sigma_onset, double tau_onset)
+    {
+        const double tensile = sigma_onset > 0.0 ? sigma_onset : 0.0;
+        const double total = tensile * tensile + tau_onset * tau_onset;
+        const double mixity = total > 0.0 ? tau_onset * tau_onset / total : 0.0;
+        return m.fracture_energy_I +
+               (m.fracture_energy_II - m.fracture_energy_I) * std::pow(mixity, m.bk_exponent);
+    }
+
+    // Algorithm 1, steps 4–5 with Remarks 1.1–1.3. Returns the damage before this call.
+    RF_HD static double updateDamage(const BondMaterial& m, double sigma, double tau,
+                                     double effective_displacement, BondHistory& h)
+    {
+        const double damage_before = h.damage;
+        if (h.stage == bondElastic) {
+            if (qnscIndex(m, sigma, tau) < 1.0) return damage_before;
+            // Onset (QNSC = 1): record d_e0, sigma_e0 and d_f = 2 G_f / sigma_e0 (Eq. 14).
+            const double s = onsetFraction(m, sigma, tau);
+            const double tensile = sigma > 0.0 ? sigma : 0.0;
+            h.onset_displacement = s * effective_displacement;
+            h.onset_stress = s * std::sqrt(tensile * tensile + tau * tau);
+            h.rupture_displacement = 2.0 * fractureEnergy(m, sigma, tau) / h.onset_stress;
+            // Remark 1.1: a rupture displacement at or below the onset (snap-back) is
+            // moved just past it, which lowers G_f to sigma_e0 d_f / 2 (Eq. 14).
+            if (h.rupture_displacement <= h.onset_displacement)
+                h.rupture_displacement = h.onset_displacement * (1.0 + m.rupture_tolerance);
+            h.max_displacement = h.onset_displacement;
+            h.stage = bondSoftening;
+        }
+        if (effective_displacement > h.max_displacement) h.max_displacement = effective_displacement;
+        double damage = 1.0;  // Remark 1.2: d_max beyond d_f breaks the bond
+        if (h.max_displacement <= h.rupture_displacement) {
+            const double d0 = h.onset_displacement, df = h.rupture_displacement, dmax = h.max_displacement;
+            damage = dmax > 0.0 ? df * (dmax - d0) / (dmax * (df - d0)) : 0.0;  // Eq. 13
+        }
+        if (damage > h.damage) h.damage = damage < 1.0 ? damage : 1.0;  // Remark 1.3
+        if (h.damage >= 1.0) h.stage = bondBroken;
+        return damage_before;
+    }
+
+    RF_HD static BondOutput evaluate(const BondMaterial& m, const BondInput& in, BondHistory& h)
+    {
+        BondOutput out;
+        if (h.stage == bondBroken) return out;
+        const double l = in.reference_length;
+        const double normal_opening = dot(in.opening, in.normal);            // d_n
+        const Vec3 shear_opening = in.opening - normal_opening * in.normal;  // d_t t
+        const double shear_opening2 = norm2(shear_opening);
+        // Undamaged stresses (Eqs. 5–8), used for the onset test.
+        const double sigma_trial = m.normal_modulus * normal_opening / l;
+        const double tau_trial = m.shear_modulus * std::sqrt(shear_opening2) / l;
+        const double tensile_opening = normal_opening > 0.0 ? normal_opening : 0.0;
+        const double effective_displacement =
+            std::sqrt(tensile_opening * tensile_opening + shear_opening2);  // Eq. 10
+        const double damage_before = updateDamage(m, sigma_trial, tau_trial, effective_displacement, h);
+
+        // Energy that damage releases: D multiplies the tensile and shear parts only.
+        const double damageable_energy =
+            0.5 * in.bond_area *
+            (m.normal_modulus * tensile_opening * tensile_opening + m.shear_modulus * shear_opening2) / l;
+        out.fracture_dissipation = damageable_energy * (h.damage - damage_before);
+        if (h.stage == bondBroken) return out;  // D = 1: force and stiffness removed
+
+        // Degraded stresses (Eqs. 16–17): no damage in compression.
+        const double intact = 1.0 - h.damage;
+        const double sigma = normal_opening < 0.0 ? sigma_trial : intact * sigma_trial;
+        const Vec3 shear_stress = (intact * m.shear_modulus / l) * shear_opening;  // tau t
+        // Dashpot (Eqs. 18–19) from the anchor points' relative velocity; it always
+        // opposes the relative motion (see docs/theory-dem.md for the sign).
+        const double normal_rate = dot(in.relative_velocity, in.normal) / l;                 // eps-dot
+        const Vec3 shear_rate = (in.relative_velocity - (normal_rate * l) * in.normal) / l;  // gamma-dot t
+        const double beta = in.damping_beta;
+        out.force_on_i = in.bond_area * ((sigma + beta * m.normal_modulus * normal_rate) * in.normal +
+                                         shear_stress + (beta * m.shear_modulus) * shear_rate);
+        out.strain_energy = 0.5 * in.bond_area * (sigma * normal_opening + dot(shear_stress, shear_opening));
+        out.damping_power =
+            in.bond_area * beta * l *
+            (m.normal_modulus * normal_rate * normal_rate + m.shear_modulus * norm2(shear_rate));
+        return out;
+    }
+};
+
+void runVoronoiQnscBonds(const BondKernelArgs& args);
+
+}  // namespace rockfrac

@@ -1,0 +1,248 @@
+// One bond between two box cells under imposed kinematics (no dynamics): the
+// traction–separation law of Eqs. 5–20 and Algorithm 1, checked bond by bond.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "boxMeshes.hpp"
+#include "core/error.hpp"
+#include "dem/demModel.hpp"
+
+using namespace rockfrac;
+
+namespace {
+
+constexpr double cell_size = 5e-3;         // [m]
+constexpr double dilation = 5e-4;          // [m]
+constexpr double bond_area = 25e-6 / 4.0;  // A/n of a 5 mm square face with 4 bonds
+constexpr double reference_length = 5e-3;  // l_i + l_j
+
+// Two cubes side by side along x, glued by the single bond at one corner of the shared face.
+VoronoiMesh oneBondMesh()
+{
+    VoronoiMesh mesh = test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation);
+    mesh.bonds.resize(1);
+    return mesh;
+}
+
+DemParameters quietParameters()
+{
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.bond_damping = 0.0;
+    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 100.0;  // d_f > d_e0 (see theory-dem.md)
+    return p;
+}
+
+double normalModulus(const DemParameters& p)
+{
+    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
+    return E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+}
+double shearModulus(const DemParameters& p)
+{
+    return p.bond_youngs_modulus / (2.0 * (1.0 + p.bond_poisson_ratio));
+}
+
+// Cell 1 displaced by d from its place (cell 0 fixed), forces evaluated; returns the force on cell 0.
+struct ImposedBond {
+    DemModel model;
+    Vec3 rest;
+    Quat orientation;
+    explicit ImposedBond(const DemParameters& p)
+        : model(oneBondMesh(), p), rest(model.cells().position[1]), orientation(model.cells().orientation[1])
+    {
+    }
+    Vec3 forceAt(const Vec3& opening, const Vec3& velocity = {})
+    {
+        model.setCellPose(1, rest + opening, orientation);
+        model.setCellVelocity(1, velocity, {});
+        model.evaluateForces(0.0);
+        return model.cells().force[0];
+    }
+    const BondArrays& bonds() const { return model.bonds(); }
+};
+
+double qnsc(const DemParameters& p, double sigma, double tau)
+{
+    const double tensile = std::max(sigma, 0.0) / p.bond_tensile_strength;
+    const double shear = tau / (p.bond_cohesion - p.bond_friction * sigma);
+    return tensile * tensile + shear * shear;
+}
+
+}  // namespace
+
+TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f A/n", "[dem][bond]")
+{
+    const DemParameters p = quietParameters();
+    ImposedBond bond(p);
+    const double kn = normalModulus(p);
+    const double onset = p.bond_tensile_strength * reference_length / kn;             // d_e0
+    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;  // d_f
+    REQUIRE(rupture > onset);
+    const int n_increments = 4000;
+    const double last = 1.2 * rupture;
+    double work = 0.0, previous_force = 0.0, peak = 0.0;
+    for (int i = 1; i <= n_increments; ++i) {
+        const double opening = last * i / n_increments;
+        const double force = bond.forceAt({opening, 0.0, 0.0}).x;
+        work += 0.5 * (force + previous_force) * (last / n_increments);
+        previous_force = force;
+        peak = std::max(peak, force);
+        // The analytic law: elastic, then linear softening to zero at d_f.
+        const double expected = opening <= onset    ? kn * opening / reference_length * bond_area
+                                : opening < rupture ? p.bond_tensile_strength * bond_area *
+                                                          (rupture - opening) / (rupture - onset)
+                                                    : 0.0;
+        REQUIRE(force == Approx(expected).margin(1e-9 * p.bond_tensile_strength * bond_area));
+    }
+    const double separation_energy = p.fracture_energy_mode_I * bond_area;
+    CHECK(peak == Approx(p.bond_tensile_strength * bond_area).epsilon(1e-3));
+    CHECK(work == Approx(separation_energy).epsilon(0.01));
+    CHECK(bond.model.energies().fracture == Approx(separation_energy).epsilon(0.01));
+    CHECK(bond.bonds().stage[0] == bondBroken);
+    CHECK(bond.model.counters().bonds_broken == 1);
+    CHECK(bond.model.cellDamage()[0] == 1.0);
+}
+
+TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the strength", "[dem][bond]")
+{
+    const DemParameters p = quietParameters();
+    const double kn = normalModulus(p), kt = shearModulus(p);
+    for (double sigma : {0.0, -10e6, -40e6, -80e6}) {
+        ImposedBond bond(p);
+        const double normal_opening = sigma * reference_length / kn;
+        const double expected = p.bond_cohesion - p.bond_friction * sigma;
+        const double step = 1e-4 * expected * reference_length / kt;
+        double shear = 0.0;
+        while (bond.bonds().stage[0] == bondElastic && shear < 2.0 * expected * reference_length / kt) {
+            shear += step;
+            bond.forceAt({normal_opening, shear, 0.0});
+        }
+        INFO("sigma = " << sigma);
+        REQUIRE(bond.bonds().stage[0] != bondElastic);
+        // Before the onset the shear stress stayed below tau-bar; at it, sigma_e0 = tau-bar.
+        CHECK(kt * (shear - step) / reference_length < expected);
+        CHECK(bond.bonds().onset_stress[0] == Approx(expected).epsilon(2e-3));
+    }
+}
+
+TEST_CASE("mixed-mode onset lies on the QNSC ellipse; G_f from Benzeggagh-Kenane", "[dem][bond]")
+{
+    DemParameters p = quietParameters();
+    p.fracture_energy_mode_I = 100.0;
+    p.fracture_energy_mode_II = 300.0;
+    p.bk_exponent = 2.0;
+    const double kn = normalModulus(p), kt = shearModulus(p);
+    for (double angle_degrees : {10.0, 30.0, 45.0, 60.0, 80.0}) {
+        ImposedBond bond(p);
+        const double angle = angle_degrees * M_PI / 180.0;
+        const Vec3 direction{std::cos(angle), std::sin(angle), 0.0};
+        double amount = 0.0;
+        while (bond.bonds().stage[0] == bondElastic && amount < 1e-3) {
+            amount += 1e-8;
+            bond.forceAt(amount * direction);
+        }
+        INFO("angle = " << angle_degrees);
+        REQUIRE(bond.bonds().stage[0] != bondElastic);
+        // Proportional loading: d_e = amount, so the onset stresses follow from d_e0.
+        const double d0 = bond.bonds().onset_displacement[0];
+        const double sigma0 = kn * d0 * std::cos(angle) / reference_length;
+        const double tau0 = kt * d0 * std::sin(angle) / reference_length;
+        CHECK(qnsc(p, sigma0, tau0) == Approx(1.0).epsilon(1e-9));
+        CHECK(bond.bonds().onset_stress[0] == Approx(std::hypot(sigma0, tau0)).epsilon(1e-9));
+        const double mixity = tau0 * tau0 / (sigma0 * sigma0 + tau0 * tau0);
+        const double fracture_energy =
+            p.fracture_energy_mode_I +
+            (p.fracture_energy_mode_II - p.fracture_energy_mode_I) * mixity * mixity;
+        CHECK(bond.bonds().rupture_displacement[0] ==
+              Approx(2.0 * fracture_energy / bond.bonds().onset_stress[0]).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("compression never damages a bond", "[dem][bond]")
+{
+    const DemParameters p = quietParameters();
+    ImposedBond bond(p);
+    const double kn = normalModulus(p);
+    const double onset = p.bond_tensile_strength * reference_length / kn;
+    for (int i = 1; i <= 100; ++i) {
+        const double opening = -50.0 * onset * i / 100.0;
+        const double force = bond.forceAt({opening, 0.0, 0.0}).x;
+        REQUIRE(force == Approx(kn * opening / reference_length * bond_area).epsilon(1e-12));
+        REQUIRE(bond.bonds().stage[0] == bondElastic);
+        REQUIRE(bond.bonds().damage[0] == 0.0);
+    }
+}
+
+TEST_CASE("damage never decreases on unloading and reloading", "[dem][bond]")
+{
+    const DemParameters p = quietParameters();
+    ImposedBond bond(p);
+    const double kn = normalModulus(p);
+    const double onset = p.bond_tensile_strength * reference_length / kn;
+    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;
+    const double peak_opening = onset + 0.5 * (rupture - onset);
+    for (int i = 1; i <= 200; ++i) bond.forceAt({peak_opening * i / 200.0, 0.0, 0.0});
+    const double damage = bond.bonds().damage[0];
+    REQUIRE(damage > 0.3);
+    // Unload to zero and into compression: D stays, the tensile stiffness is the secant one.
+    for (int i = 199; i >= -100; --i) {
+        const double opening = peak_opening * i / 200.0;
+        const double force = bond.forceAt({opening, 0.0, 0.0}).x;
+        REQUIRE(bond.bonds().damage[0] == damage);
+        const double stiffness = opening < 0.0 ? kn : (1.0 - damage) * kn;
+        REQUIRE(force == Approx(stiffness * opening / reference_length * bond_area).margin(1e-12));
+    }
+    // Reload to the previous maximum: still D; beyond it D grows.
+    for (int i = 1; i <= 200; ++i) bond.forceAt({peak_opening * i / 200.0, 0.0, 0.0});
+    CHECK(bond.bonds().damage[0] == damage);
+    bond.forceAt({1.1 * peak_opening, 0.0, 0.0});
+    CHECK(bond.bonds().damage[0] > damage);
+}
+
+TEST_CASE("bond damping: beta k eps-dot A/n (absolute) and 2 zeta sqrt(m*/k) (criticalFraction)",
+          "[dem][bond]")
+{
+    DemParameters p = quietParameters();
+    const double kn = normalModulus(p), kt = shearModulus(p);
+    const double speed = 0.01;  // [m/s]
+    SECTION("absolute: beta in seconds")
+    {
+        p.bond_damping = 1e-6;
+        p.damping_reading = DampingReading::absolute;
+        ImposedBond bond(p);
+        const Vec3 normal_force = bond.forceAt({}, {speed, 0.0, 0.0});
+        CHECK(normal_force.x ==
+              Approx(p.bond_damping * kn * (speed / reference_length) * bond_area).epsilon(1e-12));
+        const Vec3 shear_force = bond.forceAt({}, {0.0, speed, 0.0});
+        CHECK(shear_force.y ==
+              Approx(p.bond_damping * kt * (speed / reference_length) * bond_area).epsilon(1e-12));
+        CHECK(std::fabs(shear_force.x) < 1e-12 * std::fabs(shear_force.y));
+    }
+    SECTION("criticalFraction: beta = zeta of the bond's critical damping")
+    {
+        p.bond_damping = 0.1;
+        p.damping_reading = DampingReading::criticalFraction;
+        ImposedBond bond(p);
+        const double mass = p.rock_density * cell_size * cell_size * cell_size;
+        const double reduced_mass = 0.5 * mass;
+        const double stiffness = kn * bond_area / reference_length;
+        const double beta = 2.0 * p.bond_damping * std::sqrt(reduced_mass / stiffness);
+        CHECK(bond.model.interfaces().damping_beta[0] == Approx(beta).epsilon(1e-12));
+        // The dashpot is c = 2 zeta sqrt(k m*) on the relative anchor velocity.
+        const Vec3 force = bond.forceAt({}, {speed, 0.0, 0.0});
+        CHECK(force.x ==
+              Approx(2.0 * p.bond_damping * std::sqrt(stiffness * reduced_mass) * speed).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("unknown law names are user errors listing the known ones", "[dem][registry]")
+{
+    DemParameters p = quietParameters();
+    p.bond_law = "timoshenkoBeam";
+    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("voronoiQNSC"));
+    p = quietParameters();
+    p.contact_law = "linearSpring";
+    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("hertzMindlin"));
+    CHECK_THROWS_AS(dampingReadingFromName("seconds"), UserError);
+}

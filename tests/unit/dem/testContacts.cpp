@@ -1,0 +1,283 @@
+// Contacts between dilated cells and walls: eroded cores, Hertz against a plate
+// and between two cells, triangulated plate versus analytic plate, GJK.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "boxMeshes.hpp"
+#include "dem/demModel.hpp"
+#include "dem/gjk.hpp"
+
+using namespace rockfrac;
+
+namespace {
+
+constexpr double cell_size = 5e-3;
+constexpr double dilation = 5e-4;
+
+DemParameters quietParameters()
+{
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.bond_damping = 0.0;
+    return p;
+}
+
+double effectiveModulus(double E1, double nu1, double E2, double nu2)
+{
+    return 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
+}
+
+// Lowest z of the core of cell c at orientation q.
+double lowestCoreZ(const DemModel& model, int c, const Vec3& position, const Quat& q)
+{
+    const CellArrays& cells = model.cells();
+    const Mat3 R = rotationMatrix(q);
+    double lowest = 1e300;
+    for (int v = cells.core_vertex_offset[c]; v < cells.core_vertex_offset[c + 1]; ++v)
+        lowest = std::min(lowest, (position + R * cells.core_vertices[v]).z);
+    return lowest;
+}
+
+// A single tilted cube placed so that its dilated core overlaps z = 0 by overlap.
+void placeOnFloor(DemModel& model, double overlap, const Vec3& velocity = {})
+{
+    const Quat tilt = quatFromRotationVector({0.3, 0.2, 0.1}) * model.cells().orientation[0];
+    Vec3 position{0.001, 0.002, 0.0};
+    position.z = dilation - overlap - lowestCoreZ(model, 0, position, tilt);
+    model.setCellPose(0, position, tilt);
+    model.setCellVelocity(0, velocity, {});
+}
+
+}  // namespace
+
+TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touch at zero overlap", "[dem][core]")
+{
+    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), quietParameters());
+    const CellArrays& cells = model.cells();
+    CHECK(model.counters().shrunk_cores == 0);
+    REQUIRE(cells.core_vertex_offset[1] == 8);
+    for (int v = 0; v < 8; ++v) {
+        const Vec3 corner = cells.core_vertices[v];
+        for (int d = 0; d < 3; ++d) CHECK(std::fabs(corner[d]) == Approx(0.5 * cell_size - dilation).epsilon(1e-12));
+    }
+    ConvexVertexSet a, b;
+    a.vertices = cells.core_vertices.data();
+    b.vertices = cells.core_vertices.data() + 8;
+    a.n_vertices = b.n_vertices = 8;
+    a.position = cells.position[0];
+    b.position = cells.position[1];
+    a.rotation = rotationMatrix(cells.orientation[0]);
+    b.rotation = rotationMatrix(cells.orientation[1]);
+    CHECK(gjkDistance(a, b, a.position - b.position).distance == Approx(2.0 * dilation).epsilon(1e-12));
+}
+
+TEST_CASE("a thin cell whose erosion vanishes falls back to a shrunk core and is counted", "[dem][core]")
+{
+    DemParameters p = quietParameters();
+    p.dilation_radius = 0.6 * cell_size;  // larger than half the cell: erosion empties it
+    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    CHECK(model.counters().shrunk_cores == 1);
+    CHECK(model.cells().core_vertex_offset[1] == 8);
+}
+
+TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem][contact][wall]")
+{
+    const DemParameters p = quietParameters();
+    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.steel_youngs_modulus,
+                                           p.steel_poisson_ratio);
+    for (double overlap : {1e-8, 1e-7, 1e-6, 1e-5, 5e-5}) {
+        placeOnFloor(model, overlap);
+        model.evaluateForces(0.0);
+        const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
+        INFO("overlap = " << overlap);
+        CHECK(model.cells().force[0].z == Approx(hertz).epsilon(0.02));
+        CHECK(model.wallReaction(0).z == Approx(-hertz).epsilon(0.02));
+    }
+    placeOnFloor(model, -1e-6);  // a gap: no force
+    model.evaluateForces(0.0);
+    CHECK(model.cells().force[0].z == 0.0);
+}
+
+TEST_CASE("two cells touching after their bonds broke: Hertz between the cores with R* = r_d/2", "[dem][contact]")
+{
+    const DemParameters p = quietParameters();
+    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), p);
+    const Vec3 rest = model.cells().position[1];
+    const Quat q = model.cells().orientation[1];
+    const double overlap = 2e-6;
+    model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
+    model.evaluateForces(0.0);
+    // Bonded: the bonds carry the compression and the pair gets no contact force.
+    CHECK(model.counters().contacts_active == 0);
+    const double bond_force = model.cells().force[1].x;
+    CHECK(bond_force > 0.0);
+
+    BondArrays broken = model.bonds();
+    std::fill(broken.stage.begin(), broken.stage.end(), bondBroken);
+    std::fill(broken.damage.begin(), broken.damage.end(), 1.0);
+    model.setBondHistory(broken);
+    model.evaluateForces(0.0);
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
+                                           p.rock_poisson_ratio);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * dilation) * std::pow(overlap, 1.5);
+    CHECK(model.counters().contacts_active == 1);
+    CHECK(model.counters().interfaces_open == 1);
+    CHECK(model.cells().force[1].x == Approx(hertz).epsilon(1e-9));
+    CHECK(model.cells().force[0].x == Approx(-hertz).epsilon(1e-9));
+    CHECK(std::fabs(model.cells().force[1].y) < 1e-9 * hertz);
+}
+
+TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[dem][wall]")
+{
+    const DemParameters p = quietParameters();
+    const VoronoiMesh mesh = test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false);
+    DemModel analytic(mesh, p), triangulated(mesh, p);
+    analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    const double half = 0.05;
+    triangulated.addTriSurface({{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}},
+                               {{{0, 1, 2}}, {{0, 2, 3}}});
+    const Vec3 sliding{0.02, -0.01, -0.005};
+    for (DemModel* model : {&analytic, &triangulated}) {
+        placeOnFloor(*model, 3e-6, sliding);
+        model->evaluateForces(1e-7);
+        model->evaluateForces(1e-7);  // the tangential spring has grown twice
+    }
+    const Vec3 fa = analytic.cells().force[0], ft = triangulated.cells().force[0];
+    INFO("analytic " << fa.x << " " << fa.y << " " << fa.z << ", triangles " << ft.x << " " << ft.y << " " << ft.z);
+    REQUIRE(fa.z > 0.0);
+    REQUIRE(std::hypot(fa.x, fa.y) > 0.0);
+    for (int d = 0; d < 3; ++d) CHECK(ft[d] == Approx(fa[d]).margin(1e-10 * fa.z));
+    for (int d = 0; d < 3; ++d) CHECK(triangulated.wallReaction(0)[d] == Approx(analytic.wallReaction(0)[d]).margin(1e-10 * fa.z));
+}
+
+namespace {
+
+double pointSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+    const Vec3 ab = b - a;
+    const double t = std::clamp(dot(p - a, ab) / norm2(ab), 0.0, 1.0);
+    return norm(p - (a + t * ab));
+}
+
+double pointTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 normal = normalised(cross(b - a, c - a));
+    const Vec3 projected = p - dot(p - a, normal) * normal;
+    // Inside test by the signs of the sub-triangle normals.
+    const double s1 = dot(cross(b - a, projected - a), normal);
+    const double s2 = dot(cross(c - b, projected - b), normal);
+    const double s3 = dot(cross(a - c, projected - c), normal);
+    if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)) return std::fabs(dot(p - a, normal));
+    return std::min({pointSegment(p, a, b), pointSegment(p, b, c), pointSegment(p, c, a)});
+}
+
+double segmentSegment(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2)
+{
+    // Dense search along the first segment, refined: brute force, independent of GJK.
+    double best = 1e300;
+    double lo = 0.0, hi = 1.0;
+    for (int level = 0; level < 6; ++level) {
+        double best_t = lo;
+        for (int i = 0; i <= 200; ++i) {
+            const double t = lo + (hi - lo) * i / 200.0;
+            const double d = pointSegment(p1 + t * (q1 - p1), p2, q2);
+            if (d < best) {
+                best = d;
+                best_t = t;
+            }
+        }
+        const double width = (hi - lo) / 100.0;
+        lo = std::max(0.0, best_t - width);
+        hi = std::min(1.0, best_t + width);
+    }
+    return best;
+}
+
+// Distance between the hulls of two separated point sets: the minimum over
+// vertex–triangle, triangle–vertex and edge–edge pairs of all point subsets.
+double bruteForceDistance(const std::vector<Vec3>& A, const std::vector<Vec3>& B)
+{
+    double best = 1e300;
+    auto vertexTriangles = [&](const std::vector<Vec3>& points, const std::vector<Vec3>& others) {
+        for (const Vec3& p : points) {
+            for (const Vec3& o : others) best = std::min(best, norm(p - o));
+            for (std::size_t i = 0; i < others.size(); ++i)
+                for (std::size_t j = i + 1; j < others.size(); ++j)
+                    for (std::size_t k = j + 1; k < others.size(); ++k)
+                        best = std::min(best, pointTriangle(p, others[i], others[j], others[k]));
+        }
+    };
+    vertexTriangles(A, B);
+    vertexTriangles(B, A);
+    for (std::size_t i = 0; i < A.size(); ++i)
+        for (std::size_t j = i + 1; j < A.size(); ++j)
+            for (std::size_t k = 0; k < B.size(); ++k)
+                for (std::size_t l = k + 1; l < B.size(); ++l)
+                    best = std::min(best, segmentSegment(A[i], A[j], B[k], B[l]));
+    return best;
+}
+
+// Largest gap between the projections of the two sets over many directions (> 0: separated).
+double bestSeparatingGap(const std::vector<Vec3>& A, const std::vector<Vec3>& B, std::mt19937& random)
+{
+    std::normal_distribution<double> normal;
+    double best = -1e300;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Vec3 u = normalised(Vec3{normal(random), normal(random), normal(random)});
+        double max_a = -1e300, min_b = 1e300;
+        for (const Vec3& a : A) max_a = std::max(max_a, dot(a, u));
+        for (const Vec3& b : B) min_b = std::min(min_b, dot(b, u));
+        best = std::max(best, min_b - max_a);
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("GJK distance against brute force for random polytope pairs", "[dem][gjk]")
+{
+    std::mt19937 random(12345);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    int separated = 0, intersecting = 0;
+    for (int trial = 0; trial < 150; ++trial) {
+        const int na = 4 + trial % 6, nb = 4 + (trial / 6) % 6;
+        std::vector<Vec3> A(na), B(nb);
+        for (Vec3& v : A) v = {uniform(random), uniform(random), 0.5 * uniform(random)};
+        const Vec3 offset{1.5 * uniform(random), 1.5 * uniform(random), 1.5 * uniform(random)};
+        for (Vec3& v : B) v = offset + Vec3{0.7 * uniform(random), uniform(random), uniform(random)};
+        // Place B with a rotation to exercise the support mapping.
+        ConvexVertexSet a, b;
+        a.vertices = A.data();
+        a.n_vertices = na;
+        const Mat3 R = rotationMatrix(quatFromRotationVector({0.3 * trial, -0.2, 0.1 * trial}));
+        std::vector<Vec3> B_local(nb);
+        const Vec3 shift{0.1, -0.2, 0.3};
+        for (int i = 0; i < nb; ++i) B_local[i] = transposeTimes(R, B[i] - shift);
+        b.vertices = B_local.data();
+        b.n_vertices = nb;
+        b.position = shift;
+        b.rotation = R;
+        const GjkResult gjk = gjkDistance(a, b, {1.0, 0.0, 0.0});
+        INFO("trial " << trial);
+        if (gjk.intersecting) {
+            ++intersecting;
+            CHECK(bestSeparatingGap(A, B, random) < 1e-9);
+            continue;
+        }
+        ++separated;
+        const double brute = bruteForceDistance(A, B);
+        CHECK(gjk.distance == Approx(brute).epsilon(1e-6).margin(1e-9));
+        CHECK(norm(gjk.point_a - gjk.point_b) == Approx(gjk.distance).epsilon(1e-9));
+        // The witness points certify optimality: the slab between them separates the sets.
+        const Vec3 u = (gjk.point_b - gjk.point_a) / gjk.distance;
+        for (const Vec3& v : A) CHECK(dot(v - gjk.point_a, u) <= 1e-9);
+        for (const Vec3& v : B) CHECK(dot(v - gjk.point_b, u) >= -1e-9);
+    }
+    CHECK(separated > 30);
+    CHECK(intersecting > 10);
+}
