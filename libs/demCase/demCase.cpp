@@ -1,0 +1,336 @@
+#include "demCase/demCase.hpp"
+
+#include <cmath>
+
+#include "core/dictionary.hpp"
+#include "core/error.hpp"
+#include "io/stateFile.hpp"
+#include "io/vtkOutput.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+// ---- Parameters ------------------------------------------------------------------
+
+DemParameters readDemParameters(const Dictionary& d)
+{
+    static const Dimensions pascal = Dimensions::fromUnits("Pa");
+    static const Dimensions density = Dimensions::fromUnits("kg/m^3");
+    static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
+
+    DemParameters p;
+    const Dictionary& rock = d.subDict("rock");
+    p.rock_youngs_modulus = rock.getScalar("E", Bounds::positive(), &pascal);
+    p.rock_poisson_ratio = rock.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
+    p.rock_density = rock.getScalar("density", Bounds::positive(), &density);
+
+    const Dictionary& steel = d.subDict("steel");
+    p.steel_youngs_modulus = steel.getScalar("E", Bounds::positive(), &pascal);
+    p.steel_poisson_ratio = steel.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
+
+    const Dictionary& bond = d.subDict("bond");
+    p.bond_law = bond.get<std::string>("model");
+    p.bond_youngs_modulus = bond.getScalar("E", Bounds::positive(), &pascal);
+    p.bond_poisson_ratio = bond.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
+    p.bond_tensile_strength = bond.getScalar("tensileStrength", Bounds::positive(), &pascal);
+    p.bond_cohesion = bond.getScalar("cohesion", Bounds::positive(), &pascal);
+    p.bond_friction = bond.getScalar("frictionCoefficient", Bounds::nonNegative());
+    p.fracture_energy_mode_I = bond.getScalar("GI", Bounds::positive(), &energyPerArea);
+    p.fracture_energy_mode_II = bond.getScalar("GII", Bounds::positive(), &energyPerArea);
+    p.bk_exponent = bond.getScalarOrDefault("bkExponent", p.bk_exponent, Bounds::positive());
+    const Dictionary& damping = bond.subDict("damping");
+    p.damping_reading = dampingReadingFromName(damping.getWord("reading", {"absolute", "criticalFraction"}));
+    p.bond_damping = damping.getScalar("beta", Bounds::nonNegative());
+
+    const Dictionary& contact = d.subDict("contact");
+    p.contact_law = contact.get<std::string>("model");
+    const Dictionary& rockRock = contact.subDict("rockRock");
+    p.rock_rock_friction = rockRock.getScalar("friction", Bounds::nonNegative());
+    p.rock_rock_restitution = rockRock.getScalar("restitution", Bounds::open(0, 1.000001));
+    const Dictionary& rockSteel = contact.subDict("rockSteel");
+    p.rock_steel_friction = rockSteel.getScalar("friction", Bounds::nonNegative());
+    p.rock_steel_restitution = rockSteel.getScalar("restitution", Bounds::open(0, 1.000001));
+    p.validate();
+    return p;
+}
+
+Loading readLoading(const Dictionary& d)
+{
+    Loading l;
+    const Dictionary& plates = d.subDict("plates");
+    auto plate = [&](const std::string& name) {
+        const Dictionary& p = plates.subDict(name);
+        PlateSpec s;
+        s.normal = normalised(p.get<Vec3>("normal"));
+        s.velocity = p.get<Vec3>("velocity");
+        if (norm(s.normal) == 0) throw UserError(p.fileName() + ": plates/" + name + "/normal must not be zero");
+        return s;
+    };
+    l.lower = plate("lower");
+    l.upper = plate("upper");
+    if (!(l.lower.normal.z > 0.99 && l.upper.normal.z < -0.99))
+        throw UserError(d.fileName() + ": plates must be horizontal: lower normal (0 0 1), upper normal (0 0 -1)");
+    l.startGap = plates.getScalarOrDefault("startGap", 0.0, Bounds::nonNegative());
+    l.gravity = d.getOrDefault<Vec3>("gravity", Vec3{0, 0, -9.81});
+    if (d.found("settling")) l.settlingTime = d.subDict("settling").getScalar("duration", Bounds::nonNegative());
+    if (d.found("stop")) {
+        const Dictionary& stop = d.subDict("stop");
+        l.stopForceFraction = stop.getScalarOrDefault("forceDropFraction", 0.0, Bounds::closedOpen(0, 1));
+        l.stopDisplacement = stop.getScalarOrDefault("maxDisplacement", 0.0, Bounds::nonNegative());
+        l.minPeakForce = stop.getScalarOrDefault("minPeakForce", 0.0, Bounds::nonNegative());
+    }
+    const double approachSpeed = dot(l.lower.velocity - l.upper.velocity, Vec3{0, 0, 1});
+    if ((l.stopForceFraction > 0 || l.stopDisplacement > 0) && !(approachSpeed > 0))
+        throw UserError(d.fileName() +
+                        ": the plates do not approach each other (upper velocity z must be below the lower "
+                        "one), so the stop criterion can never be met; give the upper plate a downward velocity");
+    return l;
+}
+
+// ---- VTK ------------------------------------------------------------------------
+
+CellShapes captureCellShapes(const VoronoiMesh& mesh, const DemModel& model)
+{
+    CellShapes s;
+    s.cellVertexOffset = mesh.cellVertexOffset;
+    s.cellFaceOffset = mesh.cellFaceOffset;
+    s.faceVertexOffset = mesh.faceVertexOffset;
+    s.faceVertices.resize(mesh.faceVertices.size());
+    s.bodyVertices.resize(mesh.vertices.size());
+    const CellArrays& cells = model.cells();
+    for (int c = 0; c < mesh.nCells(); ++c) {
+        const Mat3 R = rotationMatrix(cells.orientation[c]);
+        for (int v = mesh.cellVertexOffset[c]; v < mesh.cellVertexOffset[c + 1]; ++v)
+            s.bodyVertices[v] = transposeTimes(R, mesh.vertices[v] - cells.position[c]);
+        for (int f = mesh.cellFaceOffset[c]; f < mesh.cellFaceOffset[c + 1]; ++f)
+            for (int k = mesh.faceVertexOffset[f]; k < mesh.faceVertexOffset[f + 1]; ++k)
+                s.faceVertices[k] = mesh.cellVertexOffset[c] + mesh.faceVertices[k];
+    }
+    return s;
+}
+
+void writeDemVtk(const fs::path& caseDir, int index, const DemModel& model, const CellShapes& shapes,
+                 bool restarted)
+{
+    const CellArrays& cells = model.cells();
+    const double time = model.time();
+    const std::string suffix = "_" + std::to_string(index);
+
+    PolyhedronSet polyhedra;
+    polyhedra.cellFaceOffset = shapes.cellFaceOffset;
+    polyhedra.faceVertexOffset = shapes.faceVertexOffset;
+    polyhedra.faceVertices = shapes.faceVertices;
+    polyhedra.points.resize(shapes.bodyVertices.size());
+    std::vector<int> ids(cells.size());
+    for (int c = 0; c < cells.size(); ++c) {
+        ids[c] = c;
+        const Mat3 R = rotationMatrix(cells.orientation[c]);
+        for (int v = shapes.cellVertexOffset[c]; v < shapes.cellVertexOffset[c + 1]; ++v)
+            polyhedra.points[v] = cells.position[c] + R * shapes.bodyVertices[v];
+    }
+    const fs::path vtk = caseDir / "VTK";
+    writePolyhedraVtu(vtk / ("cells" + suffix + ".vtu"), polyhedra,
+                      {Field::integer("cellId", ids), Field::scalar("damage", model.cellDamage()),
+                       Field::vector("velocity", cells.velocity)},
+                      time);
+
+    // Bonds: through the anchor points along the bond normal, from the plane of
+    // cell i's centroid to that of cell j's, coloured by D.
+    const InterfaceArrays& faces = model.interfaces();
+    const BondArrays& bonds = model.bonds();
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 2>> lines;
+    std::vector<double> damage;
+    points.reserve(2 * bonds.size());
+    for (int k = 0; k < faces.size(); ++k) {
+        const int i = faces.cell_i[k], j = faces.cell_j[k];
+        const Mat3 Ri = rotationMatrix(cells.orientation[i]), Rj = rotationMatrix(cells.orientation[j]);
+        const Vec3 ni = Ri * faces.normal_i[k], nj = Rj * faces.normal_j[k];
+        for (int b = faces.bond_offset[k]; b < faces.bond_offset[k + 1]; ++b) {
+            const int first = static_cast<int>(points.size());
+            points.push_back(cells.position[i] + Ri * bonds.anchor_i[b] - faces.length_i[k] * ni);
+            points.push_back(cells.position[j] + Rj * bonds.anchor_j[b] - faces.length_j[k] * nj);
+            lines.push_back({first, first + 1});
+            damage.push_back(bonds.damage[b]);
+        }
+    }
+    writeLinesVtp(vtk / ("bonds" + suffix + ".vtp"), points, lines, {Field::scalar("D", damage)}, {}, time);
+
+    for (const auto& [name, ext] : {std::pair<std::string, std::string>{"cells", ".vtu"}, {"bonds", ".vtp"}}) {
+        SeriesFile series(vtk / (name + ext + ".series"));
+        if (!restarted && index == 0) series.truncateFrom(-1.0);
+        series.add(name + suffix + ext, time);
+        series.write();
+    }
+}
+
+// ---- Whole state ------------------------------------------------------------------
+
+namespace {
+
+std::vector<double> quats(const std::vector<Quat>& q)
+{
+    std::vector<double> flat;
+    flat.reserve(4 * q.size());
+    for (const auto& v : q) flat.insert(flat.end(), {v.w, v.x, v.y, v.z});
+    return flat;
+}
+
+template <class T>
+std::vector<std::int64_t> toInt64(const std::vector<T>& v)
+{
+    return std::vector<std::int64_t>(v.begin(), v.end());
+}
+
+template <class T>
+std::vector<T> fromInt64(const std::vector<std::int64_t>& v)
+{
+    return std::vector<T>(v.begin(), v.end());
+}
+
+std::vector<double> energyArray(const DemEnergies& e)
+{
+    return {e.kinetic_translation, e.kinetic_rotation, e.bond_strain, e.contact_elastic, e.bond_damping,
+            e.contact_damping,     e.friction,         e.fracture,    e.wall_work,       e.gravity_work};
+}
+
+DemEnergies energiesFrom(const std::vector<double>& a)
+{
+    DemEnergies e;
+    e.kinetic_translation = a[0];
+    e.kinetic_rotation = a[1];
+    e.bond_strain = a[2];
+    e.contact_elastic = a[3];
+    e.bond_damping = a[4];
+    e.contact_damping = a[5];
+    e.friction = a[6];
+    e.fracture = a[7];
+    e.wall_work = a[8];
+    e.gravity_work = a[9];
+    return e;
+}
+
+}  // namespace
+
+void writeDemState(const fs::path& file, const DemModel& model, long step, double peakForce, bool loadingStarted)
+{
+    StateFile s;
+    const CellArrays& cells = model.cells();
+    s.put("cell.position", cells.position);
+    s.put("cell.velocity", cells.velocity);
+    s.put("cell.orientation", quats(cells.orientation));
+    s.put("cell.angularVelocity", cells.angular_velocity);
+
+    const BondArrays& b = model.bonds();
+    s.put("bond.stage", std::vector<std::uint8_t>(b.stage.begin(), b.stage.end()));
+    s.put("bond.onsetDisplacement", b.onset_displacement);
+    s.put("bond.onsetStress", b.onset_stress);
+    s.put("bond.ruptureDisplacement", b.rupture_displacement);
+    s.put("bond.maxDisplacement", b.max_displacement);
+    s.put("bond.damage", b.damage);
+
+    const ContactPairArrays& p = model.contactPairs();
+    s.put("pair.cellA", toInt64(p.cell_a));
+    s.put("pair.cellB", toInt64(p.cell_b));
+    s.put("pair.interface", toInt64(p.interface));
+    s.put("pair.tangentialSpring", p.tangential_spring);
+    s.put("pair.lastNormal", p.last_normal);
+    s.put("pair.status", std::vector<std::uint8_t>(p.status.begin(), p.status.end()));
+
+    const WallContactArrays& w = model.wallContacts();
+    s.put("wallItem.cell", toInt64(w.cell));
+    s.put("wallItem.wall", toInt64(w.wall));
+    s.put("wallItem.tangentialSpring", w.tangential_spring);
+    s.put("wallItem.lastNormal", w.last_normal);
+    s.put("wallItem.status", std::vector<std::uint8_t>(w.status.begin(), w.status.end()));
+
+    std::vector<double> walls;
+    for (int k = 0; k < model.nWalls(); ++k) {
+        const WallState& ws = model.wall(k);
+        walls.insert(walls.end(), {ws.origin.x, ws.origin.y, ws.origin.z, ws.orientation.w, ws.orientation.x,
+                                   ws.orientation.y, ws.orientation.z, ws.velocity.x, ws.velocity.y, ws.velocity.z,
+                                   ws.angular_velocity.x, ws.angular_velocity.y, ws.angular_velocity.z,
+                                   ws.initial_origin.x, ws.initial_origin.y, ws.initial_origin.z, ws.reaction.x,
+                                   ws.reaction.y, ws.reaction.z});
+    }
+    s.put("walls", walls);
+    s.put("energies", energyArray(model.energies()));
+    s.putScalar("initialBalance", model.initialBalance());
+    s.putScalar("time", model.time());
+    s.put("step", std::vector<std::int64_t>{step});
+    s.putScalar("peakForce", peakForce);
+    s.put("loadingStarted", std::vector<std::uint8_t>{static_cast<std::uint8_t>(loadingStarted)});
+    s.write(file);
+}
+
+DemRestart readDemState(const fs::path& file, DemModel& model)
+{
+    const StateFile s = StateFile::read(file);
+    const long nCells = model.cells().size();
+    std::vector<Quat> orientation(nCells);
+    const auto& q = s.doubles("cell.orientation", 4 * nCells);
+    for (long c = 0; c < nCells; ++c) orientation[c] = {q[4 * c], q[4 * c + 1], q[4 * c + 2], q[4 * c + 3]};
+    model.setCellState(s.vectors("cell.position", nCells), s.vectors("cell.velocity", nCells), orientation,
+                       s.vectors("cell.angularVelocity", nCells));
+
+    const long nBonds = model.bonds().size();
+    BondArrays b = model.bonds();
+    const auto& stage = s.bytes("bond.stage", nBonds);
+    b.stage.assign(stage.begin(), stage.end());
+    b.onset_displacement = s.doubles("bond.onsetDisplacement", nBonds);
+    b.onset_stress = s.doubles("bond.onsetStress", nBonds);
+    b.rupture_displacement = s.doubles("bond.ruptureDisplacement", nBonds);
+    b.max_displacement = s.doubles("bond.maxDisplacement", nBonds);
+    b.damage = s.doubles("bond.damage", nBonds);
+    model.setBondHistory(b);
+
+    ContactPairArrays p;
+    p.cell_a = fromInt64<int>(s.integers("pair.cellA"));
+    const long nPairs = static_cast<long>(p.cell_a.size());
+    p.cell_b = fromInt64<int>(s.integers("pair.cellB", nPairs));
+    p.interface = fromInt64<int>(s.integers("pair.interface", nPairs));
+    p.tangential_spring = s.vectors("pair.tangentialSpring", nPairs);
+    p.last_normal = s.vectors("pair.lastNormal", nPairs);
+    const auto& pairStatus = s.bytes("pair.status", nPairs);
+    p.status.assign(pairStatus.begin(), pairStatus.end());
+    for (long k = 0; k < nPairs; ++k)
+        if (p.cell_a[k] < 0 || p.cell_a[k] >= nCells || p.cell_b[k] < 0 || p.cell_b[k] >= nCells)
+            throw UserError(file.string() + ": contact pair " + std::to_string(k) +
+                            " names a cell outside the mesh; the state does not belong to this case");
+    WallContactArrays w;
+    w.cell = fromInt64<int>(s.integers("wallItem.cell"));
+    const long nItems = static_cast<long>(w.cell.size());
+    w.wall = fromInt64<int>(s.integers("wallItem.wall", nItems));
+    w.tangential_spring = s.vectors("wallItem.tangentialSpring", nItems);
+    w.last_normal = s.vectors("wallItem.lastNormal", nItems);
+    const auto& itemStatus = s.bytes("wallItem.status", nItems);
+    w.status.assign(itemStatus.begin(), itemStatus.end());
+    for (long k = 0; k < nItems; ++k)
+        if (w.cell[k] < 0 || w.cell[k] >= nCells || w.wall[k] < 0 || w.wall[k] >= model.nWalls())
+            throw UserError(file.string() + ": wall contact " + std::to_string(k) +
+                            " names a cell or wall outside the case; the state does not belong to this case");
+    model.setContactHistory(p, w);
+
+    const auto& walls = s.doubles("walls", 19L * model.nWalls());
+    for (int k = 0; k < model.nWalls(); ++k) {
+        WallState ws = model.wall(k);
+        const double* a = walls.data() + 19 * k;
+        ws.origin = {a[0], a[1], a[2]};
+        ws.orientation = {a[3], a[4], a[5], a[6]};
+        ws.velocity = {a[7], a[8], a[9]};
+        ws.angular_velocity = {a[10], a[11], a[12]};
+        ws.initial_origin = {a[13], a[14], a[15]};
+        ws.reaction = {a[16], a[17], a[18]};
+        model.setWallState(k, ws);
+    }
+    DemRestart r;
+    r.step = s.integers("step", 1)[0];
+    r.time = s.scalar("time");
+    r.peakForce = s.scalar("peakForce");
+    r.loadingStarted = s.bytes("loadingStarted", 1)[0] != 0;
+    model.setClock(r.time, r.step, energiesFrom(s.doubles("energies", 10)), s.scalar("initialBalance"));
+    return r;
+}
+
+}  // namespace rockfrac

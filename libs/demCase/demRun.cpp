@@ -1,0 +1,261 @@
+#include "demCase/demRun.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+#include "core/dictionary.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "core/timeControl.hpp"
+#include "demCase/demCase.hpp"
+#include "io/timeSeries.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+struct BondedDemRun::Impl {
+    const Application& app;
+    Dictionary controlDict;
+    TimeControl time;
+    DemParameters parameters;
+    Loading loading;
+    VoronoiMesh mesh;
+    std::unique_ptr<DemModel> model;
+    CellShapes shapes;
+    int lowerPlate = -1, upperPlate = -1;
+    long sampleInterval = 10;  // steps between plateForce rows
+    double rayleighStep = 0.0;
+
+    // Run state (restart).
+    long step = 0;
+    double peakForce = 0.0;
+    bool loadingStarted = false;
+    bool restarted = false;
+
+    explicit Impl(const Application& a)
+        : app(a),
+          controlDict(Dictionary::readFile(a.path("system/controlDict"))),
+          time(controlDict, a.casePath())
+    {
+        parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
+        loading = readLoading(Dictionary::readFile(a.path("constant/loading")));
+        parameters.gravity = loading.gravity;
+        if (!fs::exists(a.path("constant/voronoiMesh/meshInfo")))
+            throw UserError("missing " + a.path("constant/voronoiMesh").string() +
+                            "; run voronoiMesh first to make the bonded cells");
+        mesh = readVoronoiMesh(a.casePath());
+        model = std::make_unique<DemModel>(mesh, parameters);
+        shapes = captureCellShapes(mesh, *model);
+        placePlates();
+        chooseTimeStep();
+        readFunctions();
+        if (time.restarting()) restoreState();
+    }
+
+    void placePlates()
+    {
+        double zMin = 1e300, zMax = -1e300;
+        for (const auto& v : mesh.vertices) {
+            zMin = std::min(zMin, v.z);
+            zMax = std::max(zMax, v.z);
+        }
+        lowerPlate = model->addPlate({0, 0, zMin - loading.startGap}, loading.lower.normal);
+        upperPlate = model->addPlate({0, 0, zMax + loading.startGap}, loading.upper.normal);
+    }
+
+    void chooseTimeStep()
+    {
+        rayleighStep = model->rayleighTimeStep();
+        if (!time.deltaTGiven()) {
+            if (!controlDict.found("rayleighFraction"))
+                throw UserError(controlDict.fileName() +
+                                ": give 'deltaT' [s] or 'rayleighFraction' (the step as a fraction of the "
+                                "Rayleigh step, e.g. 0.02)");
+            time.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
+        }
+    }
+
+    void readFunctions()
+    {
+        if (!controlDict.found("functions")) return;
+        const Dictionary& functions = controlDict.subDict("functions");
+        if (functions.found("plateForce"))
+            sampleInterval = functions.subDict("plateForce").getOrDefault<long>("writeInterval", sampleInterval);
+        if (sampleInterval < 1)
+            throw UserError(controlDict.fileName() + ": functions/plateForce/writeInterval must be >= 1 step");
+    }
+
+    void restoreState()
+    {
+        const fs::path file = app.path(time.startTimeName()) / "demState";
+        const DemRestart r = readDemState(file, *model);
+        step = r.step;
+        peakForce = r.peakForce;
+        loadingStarted = r.loadingStarted;
+        restarted = true;
+        applyStage();
+    }
+
+    // Plates at rest during settling, then at their loading velocities.
+    void applyStage()
+    {
+        const bool loadingNow = model->time() >= loading.settlingTime * (1 - 1e-12);
+        if (loadingNow) loadingStarted = true;
+        model->setWallVelocity(lowerPlate, loadingStarted ? loading.lower.velocity : Vec3{});
+        model->setWallVelocity(upperPlate, loadingStarted ? loading.upper.velocity : Vec3{});
+    }
+
+    double plateForce() const { return model->wallReaction(upperPlate).z; }
+    double lowerPlateForce() const { return -model->wallReaction(lowerPlate).z; }
+    double gapChange() const
+    {
+        return model->wallDisplacement(lowerPlate).z - model->wallDisplacement(upperPlate).z;
+    }
+
+    std::vector<double> sampleRow() const
+    {
+        const DemEnergies& e = model->energies();
+        return {model->time(),
+                gapChange(),
+                plateForce(),
+                lowerPlateForce(),
+                static_cast<double>(model->counters().bonds_broken),
+                e.kinetic(),
+                e.stored(),
+                e.dissipated(),
+                e.fracture,
+                e.externalWork(),
+                e.balance() - model->initialBalance()};
+    }
+
+    static std::vector<Column> columns()
+    {
+        return {{"Time", "s"},          {"gapChange", "m"},     {"force", "N"},  {"forceLower", "N"},
+                {"brokenBonds", "-"},   {"kinetic", "J"},       {"strain", "J"}, {"dissipated", "J"},
+                {"fracture", "J"},      {"externalWork", "J"},  {"balanceError", "J"}};
+    }
+
+    void writeTime()
+    {
+        const double t = model->time();
+        const fs::path staging = time.stagingDir(t);
+        fs::remove_all(staging);
+        fs::create_directories(staging);
+        writeDemState(staging / "demState", *model, step, peakForce, loadingStarted);
+        time.commitTimeDir(t);
+        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
+    }
+
+    bool stopCriterionMet() const
+    {
+        if (!loadingStarted) return false;
+        const double f = plateForce();
+        if (loading.stopDisplacement > 0 && gapChange() >= loading.stopDisplacement) return true;
+        return loading.stopForceFraction > 0 && peakForce > loading.minPeakForce && peakForce > 0 &&
+               f < loading.stopForceFraction * peakForce;
+    }
+
+    std::string progressExtras() const
+    {
+        const DemEnergies& e = model->energies();
+        const double scale = std::max({e.externalWork(), e.kinetic() + e.stored(), 1e-30});
+        char buffer[160];
+        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  broken %d/%d  balance %+.2g %%",
+                      1e-3 * plateForce(), 1e-3 * peakForce, model->counters().bonds_broken,
+                      model->counters().bonds, 100 * (e.balance() - model->initialBalance()) / scale);
+        return buffer;
+    }
+};
+
+BondedDemRun::BondedDemRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
+BondedDemRun::~BondedDemRun() = default;
+
+void BondedDemRun::printSetup() const
+{
+    const Impl& r = *impl_;
+    const CellArrays& cells = r.model->cells();
+    double mass = 0;
+    for (int c = 0; c < cells.size(); ++c) mass += cells.mass[c];
+    std::printf("Mesh: %d cells, %d bonds, dilation radius %.4g mm, mass %.5g kg\n", r.mesh.nCells(),
+                r.mesh.nBonds(), 1e3 * r.mesh.dilationRadius, mass);
+    std::printf("Bonds: %s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m, damping %s %.3g\n",
+                r.parameters.bond_law.c_str(), 1e-9 * r.parameters.bond_youngs_modulus,
+                1e-6 * r.parameters.bond_tensile_strength, 1e-6 * r.parameters.bond_cohesion,
+                r.parameters.bond_friction, r.parameters.fracture_energy_mode_I,
+                dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
+    std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n", r.time.deltaT(),
+                r.time.deltaT() / r.rayleighStep, r.rayleighStep, r.time.endTime(), r.time.endStep());
+    std::printf("Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, settling %.4g s; memory %.3g MB\n",
+                r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
+                r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
+                r.loading.settlingTime, 1e-6 * static_cast<double>(r.model->memoryBytes()));
+    if (r.restarted) std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.step);
+}
+
+int BondedDemRun::execute()
+{
+    Impl& r = *impl_;
+    if (r.app.dryRun()) {
+        std::printf("Dry run: every input is valid; nothing run, nothing written.\n");
+        return exitSuccess;
+    }
+    installInterruptHandlers();
+    TimeSeriesWriter plateForce(r.app.casePath(), "plateForce", Impl::columns(),
+                                r.restarted ? r.model->time() : -1.0);
+    if (!r.restarted) {
+        r.applyStage();
+        r.model->evaluateForces(r.time.deltaT());
+        plateForce.append(r.sampleRow());
+        r.writeTime();
+    }
+    ProgressReporter progress(r.time.startTime(), r.time.endTime());
+    const long endStep = r.time.endStep();
+    std::string reason = "end time reached";
+    int exitCode = exitSuccess;
+    while (r.step < endStep) {
+        r.applyStage();
+        r.model->step(r.time.deltaT());
+        ++r.step;
+        const DemStatus& status = r.model->status();
+        if (!status.ok()) {
+            writeDemVtk(r.app.casePath(), static_cast<int>(r.step), *r.model, r.shapes, true);
+            const auto times = TimeControl::timeDirectories(r.app.casePath());
+            throw UserError("step " + std::to_string(r.step) + " (t = " + std::to_string(r.model->time()) +
+                            " s): " + status.message() +
+                            "; likely cause: the time step is too large for the stiffest bond or contact; "
+                            "reduce deltaT. Last complete time directory: " +
+                            (times.empty() ? std::string("none") : r.time.timeName(times.back())) +
+                            "; the failing state is in VTK/cells_" + std::to_string(r.step) + ".vtu");
+        }
+        if (r.loadingStarted) r.peakForce = std::max(r.peakForce, r.plateForce());
+        if (r.step % r.sampleInterval == 0) plateForce.append(r.sampleRow());
+        const bool stop = r.stopCriterionMet();
+        if (interrupted()) {
+            reason = "interrupted by a signal: state written, continue with startFrom latestTime";
+            exitCode = interruptExitCode();
+        }
+        if (stop) reason = "stop criterion met (force below the set fraction of its peak, or maximum approach)";
+        if (r.time.writeDue(r.step) || stop || exitCode != exitSuccess || r.step == endStep) {
+            if (r.step % r.sampleInterval != 0) plateForce.append(r.sampleRow());
+            r.writeTime();
+        }
+        if (stop || exitCode != exitSuccess) break;
+        progress.update(r.step, r.model->time(), [&] { return r.progressExtras(); });
+    }
+    progress.finish(r.step, r.model->time(), reason);
+    std::printf("Peak force %.6g N at the upper plate; %d of %d bonds broken; %ld neighbour-list rebuilds\n",
+                r.peakForce, r.model->counters().bonds_broken, r.model->counters().bonds,
+                r.model->counters().neighbour_rebuilds);
+    std::printf("Energy: external work %.4g J, kinetic %.4g J, stored %.4g J, dissipated %.4g J "
+                "(fracture %.4g J), balance error %.3g J\n",
+                r.model->energies().externalWork(), r.model->energies().kinetic(), r.model->energies().stored(),
+                r.model->energies().dissipated(), r.model->energies().fracture,
+                r.model->energies().balance() - r.model->initialBalance());
+    return exitCode;
+}
+
+}  // namespace rockfrac
