@@ -56,16 +56,30 @@ std::string inlineText(const Value& value)
     return text + ")";
 }
 
+// Whether `item` printed before a list on the next line would read back as
+// the size prefix of that list (N followed by '(' on a later line).
+bool looksLikeSizePrefix(const Value& item, const Value* next)
+{
+    return next && next->isList() && item.isNumber() &&
+           item.text.find_first_not_of("0123456789") == std::string::npos;
+}
+
 // A list too long for one line: '(' and ')' on lines of their own.
 void writeLongList(std::ostream& out, const Value& list, int level)
 {
     out << indentation(level) << "(\n";
-    for (const Value& item : list.items) {
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const Value& item = list.items[i];
+        const Value* next = i + 1 < list.items.size() ? &list.items[i + 1] : nullptr;
         const std::string text = inlineText(item);
-        if (item.isList() && text.size() > inlineWidth)
+        if (looksLikeSizePrefix(item, next)) {
+            out << indentation(level + 1) << text << " " << inlineText(*next) << "\n";
+            ++i;
+        } else if (item.isList() && text.size() > inlineWidth) {
             writeLongList(out, item, level + 1);
-        else
+        } else {
             out << indentation(level + 1) << text << "\n";
+        }
     }
     out << indentation(level) << ")\n";
 }
