@@ -290,15 +290,7 @@ std::size_t siblingValueOffset(const TextDictionary& dict)
 // not a number, directive or macro.
 void checkNewKeyword(const std::string& keyword, const std::string& keyPath)
 {
-    DictionaryLexer lexer(keyword, "keyword");
-    bool plainWord = false;
-    try {
-        const Token token = lexer.next();
-        plainWord = token.kind == TokenKind::word && token.text == keyword && lexer.next().isEnd() &&
-                    keyword[0] != '#' && keyword[0] != '$';
-    } catch (const UserError&) {
-    }
-    if (!plainWord)
+    if (!isPlainWord(keyword))
         throw UserError("cannot add '" + keyPath + "': '" + keyword +
                         "' is not a plain keyword; expected words of letters, digits and _ . : - such as "
                         "bond/tensileStrength");

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/dictionary.hpp"
+#include "core/dictionaryLexer.hpp"
 
 namespace rockfrac {
 
@@ -35,9 +36,7 @@ std::string quote(const std::string& text)
 // A keyword as it reads back: words stay bare, anything else is quoted.
 std::string keywordText(const std::string& keyword)
 {
-    const bool bare = !keyword.empty() && keyword.find_first_of(" \t\n(){}[];\"/#$") == std::string::npos &&
-                      keyword.front() != '-' && !(keyword.front() >= '0' && keyword.front() <= '9');
-    return bare ? keyword : quote(keyword);
+    return isPlainWord(keyword) ? keyword : quote(keyword);
 }
 
 std::string inlineText(const Value& value)

@@ -103,6 +103,18 @@ bool isUnsignedInteger(const std::string& word)
     return true;
 }
 
+bool isPlainWord(const std::string& text)
+{
+    if (text.empty() || text[0] == '#' || text[0] == '$') return false;
+    try {
+        DictionaryLexer lexer(text, "word");
+        const Token token = lexer.next();
+        return token.kind == TokenKind::word && token.text == text && lexer.next().isEnd();
+    } catch (const UserError&) {
+        return false;
+    }
+}
+
 DictionaryLexer::DictionaryLexer(const std::string& text, std::string fileName)
     : text_(text), fileName_(std::move(fileName))
 {

@@ -86,3 +86,12 @@ TEST_CASE("regression: the editor only creates keywords that read back", "[dicti
     CHECK(errorOf([] { setEntry("", "a b", "1", "f"); }).rfind("cannot add 'a b'", 0) == 0);
     CHECK(setEntry("\"my key\" 1;", "my key", "2", "f") == "\"my key\" 2;");
 }
+
+TEST_CASE("regression: keywords with control characters or white space are printed quoted",
+          "[dictionary][regression]")
+{
+    // crash-0534d855: the string keyword "qo-\0...\f\0" was printed bare and read back differently.
+    CHECK(
+        roundTrips(std::string("\"qo-\0\0\f\0\" yes;\n\"a b\" 1;\n\"12\" 2;\n\"#x\" 3;\n\"a//b\" 4;\n", 50)));
+    CHECK(toString(Dictionary::parse("\"a b\" 1;", "f")) == "\"a b\"           1;\n");
+}
