@@ -2,7 +2,6 @@
 // Parsing is in dictionaryParser.cpp, printing in dictionaryFormat.cpp.
 #include "core/dictionary.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

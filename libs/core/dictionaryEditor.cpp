@@ -286,9 +286,21 @@ std::size_t siblingValueOffset(const TextDictionary& dict)
     return 0;
 }
 
-std::string insertEntry(const std::string& text, const TextDictionary& dict,
-                        const std::vector<std::string>& missing, const std::string& valueText)
+// A keyword the editor writes must read back as that keyword: one plain word,
+// not a number, directive or macro.
+void checkNewKeyword(const std::string& keyword, const std::string& keyPath)
 {
+    if (!isPlainWord(keyword))
+        throw UserError("cannot add '" + keyPath + "': '" + keyword +
+                        "' is not a plain keyword; expected words of letters, digits and _ . : - such as "
+                        "bond/tensileStrength");
+}
+
+std::string insertEntry(const std::string& text, const TextDictionary& dict,
+                        const std::vector<std::string>& missing, const std::string& valueText,
+                        const std::string& keyPath)
+{
+    for (const std::string& keyword : missing) checkNewKeyword(keyword, keyPath);
     std::string indent;
     std::size_t insertAt;
     std::string closing;  // text put back before a '}' that shared the line of its '{'
@@ -357,7 +369,7 @@ std::string setEntry(const std::string& text, const std::string& keyPath, const 
     const TextDictionary root = scanText(text, fileName);
     const Position position = locate(root, keyPath);
     if (position.entry) return replaceValue(text, *position.entry, newValueText, comment);
-    const std::string added = insertEntry(text, *position.dict, position.missing, newValueText);
+    const std::string added = insertEntry(text, *position.dict, position.missing, newValueText, keyPath);
     if (comment.empty()) return added;
     // The new entry is the last of its dictionary: find it again to comment it.
     const TextDictionary again = scanText(added, fileName);

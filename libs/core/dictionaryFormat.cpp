@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/dictionary.hpp"
+#include "core/dictionaryLexer.hpp"
 
 namespace rockfrac {
 
@@ -35,9 +36,7 @@ std::string quote(const std::string& text)
 // A keyword as it reads back: words stay bare, anything else is quoted.
 std::string keywordText(const std::string& keyword)
 {
-    const bool bare = !keyword.empty() && keyword.find_first_of(" \t\n(){}[];\"/#$") == std::string::npos &&
-                      keyword.front() != '-' && !(keyword.front() >= '0' && keyword.front() <= '9');
-    return bare ? keyword : quote(keyword);
+    return isPlainWord(keyword) ? keyword : quote(keyword);
 }
 
 std::string inlineText(const Value& value)
@@ -56,16 +55,30 @@ std::string inlineText(const Value& value)
     return text + ")";
 }
 
+// Whether `item` printed before a list on the next line would read back as
+// the size prefix of that list (N followed by '(' on a later line).
+bool looksLikeSizePrefix(const Value& item, const Value* next)
+{
+    return next && next->isList() && item.isNumber() &&
+           item.text.find_first_not_of("0123456789") == std::string::npos;
+}
+
 // A list too long for one line: '(' and ')' on lines of their own.
 void writeLongList(std::ostream& out, const Value& list, int level)
 {
     out << indentation(level) << "(\n";
-    for (const Value& item : list.items) {
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const Value& item = list.items[i];
+        const Value* next = i + 1 < list.items.size() ? &list.items[i + 1] : nullptr;
         const std::string text = inlineText(item);
-        if (item.isList() && text.size() > inlineWidth)
+        if (looksLikeSizePrefix(item, next)) {
+            out << indentation(level + 1) << text << " " << inlineText(*next) << "\n";
+            ++i;
+        } else if (item.isList() && text.size() > inlineWidth) {
             writeLongList(out, item, level + 1);
-        else
+        } else {
             out << indentation(level + 1) << text << "\n";
+        }
     }
     out << indentation(level) << ")\n";
 }

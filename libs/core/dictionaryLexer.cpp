@@ -34,6 +34,29 @@ bool isControl(char c)
     return (byte < 0x20 && !isSpace(c)) || byte == 0x7f;
 }
 
+// The character(s) that a backslash escape in a string stands for. Unknown
+// escapes are kept as written, so that Windows-like paths survive.
+void appendEscaped(std::string& out, char escaped)
+{
+    switch (escaped) {
+        case 'n':
+            out += '\n';
+            break;
+        case 't':
+            out += '\t';
+            break;
+        case '"':
+        case '\\':
+            out += escaped;
+            break;
+        case '\n':
+            break;  // a backslash at the end of a line continues the string
+        default:
+            out += '\\';
+            out += escaped;
+    }
+}
+
 std::string hexByte(char c)
 {
     char buffer[8];
@@ -101,6 +124,18 @@ bool isUnsignedInteger(const std::string& word)
     for (char c : word)
         if (!isDigit(c)) return false;
     return true;
+}
+
+bool isPlainWord(const std::string& text)
+{
+    if (text.empty() || text[0] == '#' || text[0] == '$') return false;
+    try {
+        DictionaryLexer lexer(text, "word");
+        const Token token = lexer.next();
+        return token.kind == TokenKind::word && token.text == text && lexer.next().isEnd();
+    } catch (const UserError&) {
+        return false;
+    }
 }
 
 DictionaryLexer::DictionaryLexer(const std::string& text, std::string fileName)
@@ -207,24 +242,12 @@ Token DictionaryLexer::lexString()
     Token token = startToken(TokenKind::string);
     advance();  // opening quote
     while (pos_ < text_.size() && text_[pos_] != '"') {
-        char c = text_[pos_];
-        if (c == '\\' && pos_ + 1 < text_.size()) {
+        if (text_[pos_] == '\\' && pos_ + 1 < text_.size()) {
             advance();
-            const char escaped = text_[pos_];
-            // Known escapes are translated; any other backslash is kept as
-            // written, so that Windows-like paths survive.
-            if (escaped == 'n')
-                c = '\n';
-            else if (escaped == 't')
-                c = '\t';
-            else if (escaped == '"' || escaped == '\\')
-                c = escaped;
-            else if (escaped == '\n')
-                c = '\0';  // line continuation
-            else
-                token.text += '\\', c = escaped;
+            appendEscaped(token.text, text_[pos_]);
+        } else {
+            token.text += text_[pos_];
         }
-        if (c != '\0') token.text += c;
         advance();
     }
     if (pos_ >= text_.size())

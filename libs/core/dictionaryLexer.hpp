@@ -51,6 +51,10 @@ private:
 
 // Whether `word` is a number in the format's syntax: [+-]digits[.digits][e[+-]digits].
 bool looksLikeNumber(const std::string& word);
+// Whether `text` reads back as exactly this one word: not a number, string,
+// directive (#...) or macro ($...); no white space, control or delimiter
+// characters. Keywords written by the formatter and the editor must be.
+bool isPlainWord(const std::string& text);
 // Whether `word` is an unsigned integer without sign, point or exponent (a list size).
 bool isUnsignedInteger(const std::string& word);
 
