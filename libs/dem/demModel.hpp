@@ -135,6 +135,7 @@ private:
     void buildCells(const VoronoiMesh& mesh);
     void buildBonds(const VoronoiMesh& mesh);
     void buildIncidence();
+    void shrinkToFit();
     void refreshKinematicCaches();
     bool neighbourListsStale() const;
     void rebuildNeighbourLists();
@@ -183,6 +184,7 @@ private:
     std::vector<Vec3> position_at_build_;
     std::vector<Vec3> wall_origin_at_build_;
     std::vector<Quat> wall_orientation_at_build_;
+    int interfaces_open_at_build_ = 0;
     bool lists_valid_ = false;
     bool forces_valid_ = false;
     bool rebase_energy_ = false;  // the caller changed the state: restart the balance

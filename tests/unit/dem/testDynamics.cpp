@@ -1,9 +1,8 @@
 // Dynamics of cells and bonded clusters: rigid rotation, energy conservation,
 // determinism of the gather, and the safety status.
-#include <catch2/catch.hpp>
-
 #include <omp.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -75,7 +74,8 @@ TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][
     double largest_deviation = 0.0;
     for (int i = 0; i < 10000; ++i) {
         model.step(dt);
-        INFO(model.status().message() << " KE " << model.energies().kinetic() << " strain " << model.energies().bond_strain << " initial " << initial);
+        INFO(model.status().message() << " KE " << model.energies().kinetic() << " strain "
+                                      << model.energies().bond_strain << " initial " << initial);
         REQUIRE(model.status().ok());
         largest_deviation = std::max(largest_deviation, std::fabs(model.energies().balance() - initial));
     }
@@ -106,7 +106,8 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     shake(model, 0.5, 50.0, 11);
     for (int c = 0; c < model.cells().size(); ++c)
-        model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0}, model.cells().angular_velocity[c]);
+        model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
+                              model.cells().angular_velocity[c]);
     const double dt = 0.02 * model.rayleighTimeStep();
     for (int i = 0; i < 1500; ++i) model.step(dt);
     counters = model.counters();
@@ -121,8 +122,8 @@ TEST_CASE("gather determinism: 1 and 2 OpenMP threads give bitwise identical pos
     const std::vector<Vec3> one = runEventfulCluster(1, one_counters);
     const std::vector<Vec3> two = runEventfulCluster(2, two_counters);
     omp_set_num_threads(2);
-    INFO("broken " << one_counters.bonds_broken << " contacts " << one_counters.contacts_active << " wall contacts "
-                   << one_counters.wall_contacts_active);
+    INFO("broken " << one_counters.bonds_broken << " contacts " << one_counters.contacts_active
+                   << " wall contacts " << one_counters.wall_contacts_active);
     CHECK(one_counters.bonds_broken > 0);
     CHECK(one_counters.wall_contacts_active > 0);
     REQUIRE(one.size() == two.size());
@@ -145,4 +146,27 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
     REQUIRE(failed_at > 0);
     CHECK_THAT(model.status().message(), Catch::Contains("time step"));
     CHECK_THAT(model.status().message(), Catch::Contains("step " + std::to_string(failed_at)));
+}
+
+// Not a test: the speed of an intact bonded block (run with: test_dem "[.benchmark]").
+TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]")
+{
+    DemParameters p = quietParameters();
+    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    const int side = 20;
+    DemModel model(
+        test::boxBlockMesh(side, side, side, {cell_size, cell_size, cell_size}, dilation, true, {}, {3, 4}),
+        p);
+    shake(model, 0.01, 2.0, 5);
+    const double dt = 0.02 * model.rayleighTimeStep();
+    const int n_steps = 200;
+    model.step(dt);
+    const double start = omp_get_wtime();
+    for (int i = 0; i < n_steps; ++i) model.step(dt);
+    const double seconds = omp_get_wtime() - start;
+    const int n_cells = model.cells().size();
+    WARN("cells " << n_cells << ", bonds per cell " << double(model.bonds().size()) / n_cells << ", threads "
+                  << omp_get_max_threads() << ": " << n_cells * double(n_steps) / seconds << " cell-steps/s, "
+                  << double(model.memoryBytes()) / n_cells << " bytes/cell, rebuilds "
+                  << model.counters().neighbour_rebuilds);
 }
