@@ -885,6 +885,15 @@ void DemModel::setCellState(const std::vector<Vec3>& position, const std::vector
     rebase_energy_ = true;
 }
 
+void DemModel::setCellForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque)
+{
+    requireSize(force.size(), cells_.size(), "cell forces");
+    requireSize(torque.size(), cells_.size(), "cell torques");
+    cells_.force = force;
+    cells_.torque = torque;
+    forces_valid_ = true;
+}
+
 void DemModel::setBondHistory(const BondArrays& history)
 {
     const int n = bonds_.size();
