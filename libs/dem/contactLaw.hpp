@@ -107,6 +107,9 @@ struct PairKernelArgs {
     const int* cell_a = nullptr;
     const int* cell_b = nullptr;
     const int* interface = nullptr;  // -1 when the pair shares no face
+    // Gap between the dilated surfaces at the last GJK call, less a bound on the
+    // approach since: while positive the pair cannot touch and GJK is skipped.
+    double* separation_margin = nullptr;
     ContactItemOutputs items;
     Vec3* force_on_b = nullptr;
     Vec3* torque_on_a = nullptr;
@@ -162,10 +165,19 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p)
     const Vec3 between = cells.position[cb] - cells.position[ca];
     const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
     if (bonded || norm2(between) > reach * reach) return clearItem(a.items, p);
+    // Largest approach of the two surfaces during this step (x 1.25 for the change of
+    // the velocities within the step): translation plus rotation of the far points.
+    const double approach = 1.25 * a.dt *
+                            (norm(cells.velocity[ca]) + norm(cells.velocity[cb]) +
+                             norm(cells.angular_velocity_world[ca]) * cells.bounding_radius[ca] +
+                             norm(cells.angular_velocity_world[cb]) * cells.bounding_radius[cb]);
+    a.separation_margin[p] -= approach;
+    if (a.separation_margin[p] > 0.0) return clearItem(a.items, p);
     const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
     const Vec3 previous = a.items.last_normal[p];
     const Vec3 fallback = norm2(previous) > 0.0 ? previous : normalised(between);
     const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
+    a.separation_margin[p] = g.overlap < 0.0 ? -g.overlap : 0.0;
     if (!(g.overlap > 0.0)) return clearItem(a.items, p);
     a.items.last_normal[p] = g.normal;
     ContactInput in;

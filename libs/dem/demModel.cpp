@@ -116,6 +116,7 @@ DemModel::DemModel(const VoronoiMesh& mesh, const DemParameters& parameters) : p
     buildCells(mesh);
     buildBonds(mesh);
     buildIncidence();
+    shrinkToFit();
     refreshKinematicCaches();
     computeForces(0.0);
     measureCells(0.0);
@@ -292,6 +293,19 @@ void DemModel::buildIncidence()
     cell_pair_offset_.assign(n + 1, 0);
 }
 
+void DemModel::shrinkToFit()
+{
+    CellArrays& c = cells_;
+    c.core_vertices.shrink_to_fit();
+    c.core_vertex_offset.shrink_to_fit();
+    InterfaceArrays& f = interfaces_;
+    for (auto* v : {&f.cell_i, &f.cell_j, &f.bond_offset, &f.intact_bonds}) v->shrink_to_fit();
+    for (auto* v : {&f.normal_i, &f.normal_j}) v->shrink_to_fit();
+    for (auto* v : {&f.length_i, &f.length_j, &f.bond_area, &f.damping_beta}) v->shrink_to_fit();
+    bonds_.anchor_i.shrink_to_fit();
+    bonds_.anchor_j.shrink_to_fit();
+}
+
 // ---- Walls ------------------------------------------------------------------
 
 int DemModel::addPlate(const Vec3& point, const Vec3& normal_into_domain, const Vec3& velocity)
@@ -405,17 +419,22 @@ void DemModel::rebuildNeighbourLists()
     const std::vector<std::pair<int, int>> near =
         findNearPairs(cells_.position, cells_.bounding_radius, skin_);
     ContactPairArrays next;
-    next.cell_a.reserve(near.size());
+    for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->reserve(near.size());
+    next.tangential_spring.reserve(near.size());
+    next.last_normal.reserve(near.size());
     std::size_t old = 0;
     for (const auto& [a, b] : near) {
-        next.cell_a.push_back(a);
-        next.cell_b.push_back(b);
-        // The interface of the pair, if it shares a bonded face.
+        // The interface of the pair, if it shares a bonded face. Pairs still bonded
+        // are left out: when their last bond breaks the lists are rebuilt.
         const auto begin = neighbour_cell_.begin() + neighbour_offset_[a];
         const auto end = neighbour_cell_.begin() + neighbour_offset_[a + 1];
         const auto found = std::lower_bound(begin, end, b);
-        next.interface.push_back(
-            found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1);
+        const int iface =
+            found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1;
+        if (iface >= 0 && interfaces_.intact_bonds[iface] > 0) continue;
+        next.cell_a.push_back(a);
+        next.cell_b.push_back(b);
+        next.interface.push_back(iface);
         // Carry the contact history by key (both lists sorted by (a, b)).
         while (old < pairs_.cell_a.size() &&
                std::make_pair(pairs_.cell_a[old], pairs_.cell_b[old]) < std::make_pair(a, b))
@@ -424,7 +443,8 @@ void DemModel::rebuildNeighbourLists()
         next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
         next.last_normal.push_back(kept ? pairs_.last_normal[old] : Vec3{});
     }
-    const std::size_t m = near.size();
+    const std::size_t m = next.cell_a.size();
+    next.separation_margin.assign(m, 0.0);
     next.force_on_b.assign(m, Vec3{});
     next.torque_on_a.assign(m, Vec3{});
     next.torque_on_b.assign(m, Vec3{});
@@ -443,6 +463,7 @@ void DemModel::rebuildNeighbourLists()
         wall_origin_at_build_.push_back(w.origin);
         wall_orientation_at_build_.push_back(w.orientation);
     }
+    interfaces_open_at_build_ = counters_.interfaces_open;
     lists_valid_ = true;
     ++counters_.neighbour_rebuilds;
 }
@@ -619,6 +640,7 @@ void DemModel::runContactKernels(double dt)
     pa.cell_a = pairs_.cell_a.data();
     pa.cell_b = pairs_.cell_b.data();
     pa.interface = pairs_.interface.data();
+    pa.separation_margin = pairs_.separation_margin.data();
     pa.items = itemOutputs(pairs_);
     pa.force_on_b = pairs_.force_on_b.data();
     pa.torque_on_a = pairs_.torque_on_a.data();
@@ -695,8 +717,10 @@ void DemModel::gatherForces()
 void DemModel::computeForces(double dt)
 {
     refreshKinematicCaches();
-    if (neighbourListsStale()) rebuildNeighbourLists();
     runBondKernel(dt);
+    // Moved too far, or an interface lost its last bond (its pair must enter the list).
+    if (neighbourListsStale() || counters_.interfaces_open != interfaces_open_at_build_)
+        rebuildNeighbourLists();
     runContactKernels(dt);
     gatherForces();
     forces_valid_ = true;
@@ -861,6 +885,15 @@ void DemModel::setCellState(const std::vector<Vec3>& position, const std::vector
     rebase_energy_ = true;
 }
 
+void DemModel::setCellForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque)
+{
+    requireSize(force.size(), cells_.size(), "cell forces");
+    requireSize(torque.size(), cells_.size(), "cell torques");
+    cells_.force = force;
+    cells_.torque = torque;
+    forces_valid_ = true;
+}
+
 void DemModel::setBondHistory(const BondArrays& history)
 {
     const int n = bonds_.size();
@@ -906,7 +939,7 @@ void DemModel::setCellPose(int cell, const Vec3& position, const Quat& orientati
 {
     cells_.position.at(cell) = position;
     cells_.orientation.at(cell) = normalised(orientation);
-    forces_valid_ = false;
+    lists_valid_ = forces_valid_ = false;  // a jump: GJK margins no longer hold
     rebase_energy_ = true;
 }
 
@@ -957,9 +990,9 @@ std::size_t DemModel::memoryBytes() const
              bytes(b.damage);
     const ContactPairArrays& p = pairs_;
     total += bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
-             bytes(p.last_normal) + bytes(p.force_on_b) + bytes(p.torque_on_a) + bytes(p.torque_on_b) +
-             bytes(p.elastic_energy) + bytes(p.damping_power) + bytes(p.friction_dissipation) +
-             bytes(p.status);
+             bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.force_on_b) + bytes(p.torque_on_a) +
+             bytes(p.torque_on_b) + bytes(p.elastic_energy) + bytes(p.damping_power) +
+             bytes(p.friction_dissipation) + bytes(p.status);
     total += bytes(rotation_) + bytes(angular_velocity_world_) + bytes(cell_interface_offset_) +
              bytes(cell_interfaces_) + bytes(cell_pair_offset_) + bytes(cell_pairs_) +
              bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) + bytes(neighbour_cell_) +

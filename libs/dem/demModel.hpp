@@ -107,10 +107,15 @@ public:
 
     // Restart: the kinematic state, the bond histories, the contact histories (keys
     // and springs), the walls, time, step count and the energy accumulators. Sizes
-    // must match this model (UserError otherwise); lists are rebuilt, histories
-    // carried by their keys, and forces recomputed.
+    // must match this model (UserError otherwise); lists are rebuilt and histories
+    // carried by their keys. Order: cell state, bond and contact histories, walls,
+    // clock, and setCellForces last (the other setters mark the forces stale).
     void setCellState(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
                       const std::vector<Quat>& orientation, const std::vector<Vec3>& angular_velocity);
+    // The total force and torque of the last step: with them the next step continues
+    // bitwise as if never interrupted (else forces are recomputed at the restart state,
+    // with the dashpots seeing end-of-step instead of mid-step velocities).
+    void setCellForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
     void setBondHistory(const BondArrays& history);  // anchors are kept; history fields replaced
     void setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items);
     void setWallState(int wall, const WallState& state);
@@ -135,6 +140,7 @@ private:
     void buildCells(const VoronoiMesh& mesh);
     void buildBonds(const VoronoiMesh& mesh);
     void buildIncidence();
+    void shrinkToFit();
     void refreshKinematicCaches();
     bool neighbourListsStale() const;
     void rebuildNeighbourLists();
@@ -183,6 +189,7 @@ private:
     std::vector<Vec3> position_at_build_;
     std::vector<Vec3> wall_origin_at_build_;
     std::vector<Quat> wall_orientation_at_build_;
+    int interfaces_open_at_build_ = 0;
     bool lists_valid_ = false;
     bool forces_valid_ = false;
     bool rebase_energy_ = false;  // the caller changed the state: restart the balance

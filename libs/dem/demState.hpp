@@ -64,6 +64,7 @@ struct BondArrays {
 struct ContactPairArrays {
     std::vector<int> cell_a, cell_b, interface;
     std::vector<Vec3> tangential_spring, last_normal;  // history, carried across rebuilds by (a, b)
+    std::vector<double> separation_margin;             // GJK skipping (reset at rebuilds)
     std::vector<Vec3> force_on_b, torque_on_a, torque_on_b;
     std::vector<double> elastic_energy, damping_power, friction_dissipation;
     std::vector<unsigned char> status;  // ContactStatus

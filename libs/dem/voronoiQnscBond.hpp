@@ -80,37 +80,49 @@ struct VoronoiQnscLaw {
         return damage_before;
     }
 
+    // The QNSC onset test without square roots or divisions (the hot path of an
+    // intact bond): (<sigma>/sigma-bar)^2 + tau^2/tau-bar^2 >= 1.
+    RF_HD static bool onsetReached(const BondMaterial& m, double sigma, double tau2)
+    {
+        const double shear_strength = m.cohesion - m.friction * sigma;
+        if (shear_strength <= 0.0) return true;
+        const double tensile = sigma > 0.0 ? sigma / m.tensile_strength : 0.0;
+        return tau2 >= (1.0 - tensile * tensile) * shear_strength * shear_strength;
+    }
+
     RF_HD static BondOutput evaluate(const BondMaterial& m, const BondInput& in, BondHistory& h)
     {
         BondOutput out;
         if (h.stage == bondBroken) return out;
-        const double l = in.reference_length;
+        const double l = in.reference_length, inverse_l = 1.0 / l;
         const double normal_opening = dot(in.opening, in.normal);            // d_n
         const Vec3 shear_opening = in.opening - normal_opening * in.normal;  // d_t t
         const double shear_opening2 = norm2(shear_opening);
         // Undamaged stresses (Eqs. 5–8), used for the onset test.
-        const double sigma_trial = m.normal_modulus * normal_opening / l;
-        const double tau_trial = m.shear_modulus * std::sqrt(shear_opening2) / l;
-        const double tensile_opening = normal_opening > 0.0 ? normal_opening : 0.0;
-        const double effective_displacement =
-            std::sqrt(tensile_opening * tensile_opening + shear_opening2);  // Eq. 10
-        const double damage_before = updateDamage(m, sigma_trial, tau_trial, effective_displacement, h);
-
-        // Energy that damage releases: D multiplies the tensile and shear parts only.
-        const double damageable_energy =
-            0.5 * in.bond_area *
-            (m.normal_modulus * tensile_opening * tensile_opening + m.shear_modulus * shear_opening2) / l;
-        out.fracture_dissipation = damageable_energy * (h.damage - damage_before);
-        if (h.stage == bondBroken) return out;  // D = 1: force and stiffness removed
-
+        const double sigma_trial = m.normal_modulus * normal_opening * inverse_l;
+        const double tau_trial2 = m.shear_modulus * m.shear_modulus * shear_opening2 * inverse_l * inverse_l;
+        if (h.stage != bondElastic || onsetReached(m, sigma_trial, tau_trial2)) {
+            const double tensile_opening = normal_opening > 0.0 ? normal_opening : 0.0;
+            const double effective_displacement =
+                std::sqrt(tensile_opening * tensile_opening + shear_opening2);  // Eq. 10
+            const double damage_before =
+                updateDamage(m, sigma_trial, std::sqrt(tau_trial2), effective_displacement, h);
+            // Energy that damage releases: D multiplies the tensile and shear parts only.
+            const double damageable_energy =
+                0.5 * in.bond_area * inverse_l *
+                (m.normal_modulus * tensile_opening * tensile_opening + m.shear_modulus * shear_opening2);
+            out.fracture_dissipation = damageable_energy * (h.damage - damage_before);
+            if (h.stage == bondBroken) return out;  // D = 1: force and stiffness removed
+        }
         // Degraded stresses (Eqs. 16–17): no damage in compression.
         const double intact = 1.0 - h.damage;
         const double sigma = normal_opening < 0.0 ? sigma_trial : intact * sigma_trial;
-        const Vec3 shear_stress = (intact * m.shear_modulus / l) * shear_opening;  // tau t
+        const Vec3 shear_stress = (intact * m.shear_modulus * inverse_l) * shear_opening;  // tau t
         // Dashpot (Eqs. 18–19) from the anchor points' relative velocity; it always
         // opposes the relative motion (see docs/theory-dem.md for the sign).
-        const double normal_rate = dot(in.relative_velocity, in.normal) / l;                 // eps-dot
-        const Vec3 shear_rate = (in.relative_velocity - (normal_rate * l) * in.normal) / l;  // gamma-dot t
+        const double normal_rate = dot(in.relative_velocity, in.normal) * inverse_l;  // eps-dot
+        const Vec3 shear_rate =
+            (in.relative_velocity - (normal_rate * l) * in.normal) * inverse_l;  // gamma-dot t
         const double beta = in.damping_beta;
         out.force_on_i = in.bond_area * ((sigma + beta * m.normal_modulus * normal_rate) * in.normal +
                                          shear_stress + (beta * m.shear_modulus) * shear_rate);

@@ -9,9 +9,12 @@
 namespace rockfrac::test {
 
 // Box cells of size (sx, sy, sz) starting at origin; bonded = glue every shared face
-// at its four corners (A/n = face area / 4, l_i = l_j = half the cell size).
+// at its four corners (A/n = face area / 4, l_i = l_j = half the cell size). A
+// bond_grid of (nu, nv) > (2, 2) glues each face at an nu x nv lattice of points
+// instead (corners included), to mimic the ~35 bonds per cell of a Voronoi mesh.
 inline VoronoiMesh boxBlockMesh(int nx, int ny, int nz, const Vec3& size, double dilation_radius,
-                                bool bonded = true, const Vec3& origin = {})
+                                bool bonded = true, const Vec3& origin = {},
+                                std::array<int, 2> bond_grid = {2, 2})
 {
     VoronoiMesh mesh;
     mesh.dilationRadius = dilation_radius;
@@ -62,21 +65,27 @@ inline VoronoiMesh boxBlockMesh(int nx, int ny, int nz, const Vec3& size, double
             }
     if (!bonded) return mesh;
     // Bonds on the +x, +y, +z faces of each cell (so cellI < cellJ).
+    const int n_points = bond_grid[0] * bond_grid[1];
     for (int c = 0; c < n_cells; ++c)
         for (int f = 1; f < 6; f += 2) {
             const int d = mesh.faceNeighbour[6 * c + f];
             if (d == boundaryFace) continue;
-            const double half[3] = {0.5 * size.x, 0.5 * size.y, 0.5 * size.z};
-            for (int e = mesh.faceVertexOffset[6 * c + f]; e < mesh.faceVertexOffset[6 * c + f + 1]; ++e) {
+            const int axis = f / 2, u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+            for (int point = 0; point < n_points; ++point) {
+                const double u = double(point % bond_grid[0]) / (bond_grid[0] - 1);
+                const double v = double(point / bond_grid[0]) / (bond_grid[1] - 1);
                 VoronoiBond bond;
                 bond.cellI = c;
                 bond.cellJ = d;
                 bond.faceI = 6 * c + f;
                 bond.faceJ = 6 * d + f - 1;
-                bond.point = mesh.vertices[mesh.cellVertexOffset[c] + mesh.faceVertices[e]];
+                bond.point = mesh.centroids[c] - 0.5 * size;
+                bond.point[axis] += size[axis];
+                bond.point[u_axis] += u * size[u_axis];
+                bond.point[v_axis] += v * size[v_axis];
                 bond.normalI = normals[f];
-                bond.lI = bond.lJ = half[f / 2];
-                bond.area = face_area[f] / 4.0;
+                bond.lI = bond.lJ = 0.5 * size[axis];
+                bond.area = face_area[f] / n_points;
                 mesh.bonds.push_back(bond);
             }
         }

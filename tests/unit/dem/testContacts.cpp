@@ -1,8 +1,7 @@
 // Contacts between dilated cells and walls: eroded cores, Hertz against a plate
 // and between two cells, triangulated plate versus analytic plate, GJK.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
@@ -53,15 +52,18 @@ void placeOnFloor(DemModel& model, double overlap, const Vec3& velocity = {})
 
 }  // namespace
 
-TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touch at zero overlap", "[dem][core]")
+TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touch at zero overlap",
+          "[dem][core]")
 {
-    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), quietParameters());
+    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation),
+                   quietParameters());
     const CellArrays& cells = model.cells();
     CHECK(model.counters().shrunk_cores == 0);
     REQUIRE(cells.core_vertex_offset[1] == 8);
     for (int v = 0; v < 8; ++v) {
         const Vec3 corner = cells.core_vertices[v];
-        for (int d = 0; d < 3; ++d) CHECK(std::fabs(corner[d]) == Approx(0.5 * cell_size - dilation).epsilon(1e-12));
+        for (int d = 0; d < 3; ++d)
+            CHECK(std::fabs(corner[d]) == Approx(0.5 * cell_size - dilation).epsilon(1e-12));
     }
     ConvexVertexSet a, b;
     a.vertices = cells.core_vertices.data();
@@ -88,8 +90,8 @@ TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem]
     const DemParameters p = quietParameters();
     DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
-    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.steel_youngs_modulus,
-                                           p.steel_poisson_ratio);
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
+                                           p.steel_youngs_modulus, p.steel_poisson_ratio);
     for (double overlap : {1e-8, 1e-7, 1e-6, 1e-5, 5e-5}) {
         placeOnFloor(model, overlap);
         model.evaluateForces(0.0);
@@ -103,7 +105,8 @@ TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem]
     CHECK(model.cells().force[0].z == 0.0);
 }
 
-TEST_CASE("two cells touching after their bonds broke: Hertz between the cores with R* = r_d/2", "[dem][contact]")
+TEST_CASE("two cells touching after their bonds broke: Hertz between the cores with R* = r_d/2",
+          "[dem][contact]")
 {
     const DemParameters p = quietParameters();
     DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), p);
@@ -139,8 +142,9 @@ TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[d
     DemModel analytic(mesh, p), triangulated(mesh, p);
     analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     const double half = 0.05;
-    triangulated.addTriSurface({{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}},
-                               {{{0, 1, 2}}, {{0, 2, 3}}});
+    triangulated.addTriSurface(
+        {{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}},
+        {{{0, 1, 2}}, {{0, 2, 3}}});
     const Vec3 sliding{0.02, -0.01, -0.005};
     for (DemModel* model : {&analytic, &triangulated}) {
         placeOnFloor(*model, 3e-6, sliding);
@@ -148,11 +152,13 @@ TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[d
         model->evaluateForces(1e-7);  // the tangential spring has grown twice
     }
     const Vec3 fa = analytic.cells().force[0], ft = triangulated.cells().force[0];
-    INFO("analytic " << fa.x << " " << fa.y << " " << fa.z << ", triangles " << ft.x << " " << ft.y << " " << ft.z);
+    INFO("analytic " << fa.x << " " << fa.y << " " << fa.z << ", triangles " << ft.x << " " << ft.y << " "
+                     << ft.z);
     REQUIRE(fa.z > 0.0);
     REQUIRE(std::hypot(fa.x, fa.y) > 0.0);
     for (int d = 0; d < 3; ++d) CHECK(ft[d] == Approx(fa[d]).margin(1e-10 * fa.z));
-    for (int d = 0; d < 3; ++d) CHECK(triangulated.wallReaction(0)[d] == Approx(analytic.wallReaction(0)[d]).margin(1e-10 * fa.z));
+    for (int d = 0; d < 3; ++d)
+        CHECK(triangulated.wallReaction(0)[d] == Approx(analytic.wallReaction(0)[d]).margin(1e-10 * fa.z));
 }
 
 namespace {
@@ -172,7 +178,8 @@ double pointTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
     const double s1 = dot(cross(b - a, projected - a), normal);
     const double s2 = dot(cross(c - b, projected - b), normal);
     const double s3 = dot(cross(a - c, projected - c), normal);
-    if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)) return std::fabs(dot(p - a, normal));
+    if ((s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0))
+        return std::fabs(dot(p - a, normal));
     return std::min({pointSegment(p, a, b), pointSegment(p, b, c), pointSegment(p, c, a)});
 }
 

@@ -1,9 +1,8 @@
 // Dynamics of cells and bonded clusters: rigid rotation, energy conservation,
 // determinism of the gather, and the safety status.
-#include <catch2/catch.hpp>
-
 #include <omp.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -59,6 +58,7 @@ TEST_CASE("a torque-free spinning cell with asymmetric inertia keeps its angular
     // The body did tumble (the angular velocity in the body frame changed a lot).
     CHECK(std::fabs(model.cells().angular_velocity[0].y - 10.0) > 1.0);
     // Energy is not an invariant of the scheme; first-order drift stays small.
+    INFO("rotational energy " << energy << " -> " << model.energies().kinetic_rotation);
     CHECK(model.energies().kinetic_rotation == Approx(energy).epsilon(0.02));
 }
 
@@ -75,7 +75,8 @@ TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][
     double largest_deviation = 0.0;
     for (int i = 0; i < 10000; ++i) {
         model.step(dt);
-        INFO(model.status().message() << " KE " << model.energies().kinetic() << " strain " << model.energies().bond_strain << " initial " << initial);
+        INFO(model.status().message() << " KE " << model.energies().kinetic() << " strain "
+                                      << model.energies().bond_strain << " initial " << initial);
         REQUIRE(model.status().ok());
         largest_deviation = std::max(largest_deviation, std::fabs(model.energies().balance() - initial));
     }
@@ -106,7 +107,8 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     shake(model, 0.5, 50.0, 11);
     for (int c = 0; c < model.cells().size(); ++c)
-        model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0}, model.cells().angular_velocity[c]);
+        model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
+                              model.cells().angular_velocity[c]);
     const double dt = 0.02 * model.rayleighTimeStep();
     for (int i = 0; i < 1500; ++i) model.step(dt);
     counters = model.counters();
@@ -121,8 +123,8 @@ TEST_CASE("gather determinism: 1 and 2 OpenMP threads give bitwise identical pos
     const std::vector<Vec3> one = runEventfulCluster(1, one_counters);
     const std::vector<Vec3> two = runEventfulCluster(2, two_counters);
     omp_set_num_threads(2);
-    INFO("broken " << one_counters.bonds_broken << " contacts " << one_counters.contacts_active << " wall contacts "
-                   << one_counters.wall_contacts_active);
+    INFO("broken " << one_counters.bonds_broken << " contacts " << one_counters.contacts_active
+                   << " wall contacts " << one_counters.wall_contacts_active);
     CHECK(one_counters.bonds_broken > 0);
     CHECK(one_counters.wall_contacts_active > 0);
     REQUIRE(one.size() == two.size());
@@ -145,4 +147,69 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
     REQUIRE(failed_at > 0);
     CHECK_THAT(model.status().message(), Catch::Contains("time step"));
     CHECK_THAT(model.status().message(), Catch::Contains("step " + std::to_string(failed_at)));
+}
+
+// Not a test: the speed of an intact bonded block (run with: test_dem "[.benchmark]").
+TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]")
+{
+    DemParameters p = quietParameters();
+    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    const int side = 20;
+    DemModel model(
+        test::boxBlockMesh(side, side, side, {cell_size, cell_size, cell_size}, dilation, true, {}, {3, 4}),
+        p);
+    shake(model, 0.01, 2.0, 5);
+    const double dt = 0.02 * model.rayleighTimeStep();
+    const int n_steps = 200;
+    model.step(dt);
+    const double start = omp_get_wtime();
+    for (int i = 0; i < n_steps; ++i) model.step(dt);
+    const double seconds = omp_get_wtime() - start;
+    const int n_cells = model.cells().size();
+    WARN("cells " << n_cells << ", bonds per cell " << double(model.bonds().size()) / n_cells << ", threads "
+                  << omp_get_max_threads() << ": " << n_cells * double(n_steps) / seconds << " cell-steps/s, "
+                  << double(model.memoryBytes()) / n_cells << " bytes/cell, rebuilds "
+                  << model.counters().neighbour_rebuilds);
+}
+
+TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "[dem][restart]")
+{
+    DemParameters p;
+    p.bond_tensile_strength = 2e5;
+    p.bond_cohesion = 3e5;
+    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
+    p.bond_damping = 0.05;
+    p.damping_reading = DampingReading::criticalFraction;
+    const VoronoiMesh mesh = test::boxBlockMesh(4, 4, 3, {cell_size, cell_size, cell_size}, dilation, true,
+                                                {0.0, 0.0, 0.2 * dilation});
+    DemModel original(mesh, p);
+    original.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 0.01});
+    shake(original, 0.5, 50.0, 13);
+    for (int c = 0; c < original.cells().size(); ++c)
+        original.setCellVelocity(c, original.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
+                                 original.cells().angular_velocity[c]);
+    const double dt = 0.02 * original.rayleighTimeStep();
+    for (int i = 0; i < 800; ++i) original.step(dt);
+    REQUIRE(original.counters().bonds_broken > 0);
+
+    DemModel restarted(mesh, p);
+    restarted.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    const CellArrays& cells = original.cells();
+    restarted.setCellState(cells.position, cells.velocity, cells.orientation, cells.angular_velocity);
+    restarted.setBondHistory(original.bonds());
+    restarted.setContactHistory(original.contactPairs(), original.wallContacts());
+    restarted.setWallState(0, original.wall(0));
+    restarted.setClock(original.time(), original.counters().steps, original.energies(),
+                       original.initialBalance());
+    restarted.setCellForces(cells.force, cells.torque);
+    for (int i = 0; i < 400; ++i) {
+        original.step(dt);
+        restarted.step(dt);
+    }
+    const auto& a = original.cells().position;
+    const auto& b = restarted.cells().position;
+    CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+    CHECK(original.energies().balance() == restarted.energies().balance());
+    CHECK(original.counters().bonds_broken == restarted.counters().bonds_broken);
+    CHECK(original.wallReaction(0).z == restarted.wallReaction(0).z);
 }
