@@ -54,13 +54,14 @@ RF_HD inline PhiloxBlock philox4x32(PhiloxBlock counter, PhiloxKey key)
     return counter;
 }
 
-// 53 random bits from two 32-bit words mapped to the open interval (0, 1):
-// the midpoint of one of 2^53 equal bins, so neither 0 nor 1 is ever returned
+// 52 random bits from two 32-bit words mapped to the open interval (0, 1):
+// the midpoint of one of 2^52 equal bins, so neither 0 nor 1 is ever returned
+// (with 53 bits the last midpoint, 1 - 2^-54, would round to 1.0)
 // (safe for log(u) and log(1 - u)).
 RF_HD inline double openUnitInterval(std::uint32_t high, std::uint32_t low)
 {
-    const std::uint64_t bits = ((static_cast<std::uint64_t>(high) << 32) | low) >> 11;
-    return (static_cast<double>(bits) + 0.5) * 0x1.0p-53;
+    const std::uint64_t bits = ((static_cast<std::uint64_t>(high) << 32) | low) >> 12;
+    return (static_cast<double>(bits) + 0.5) * 0x1.0p-52;
 }
 
 // Uniform double in (0, 1) for draw `counter` of stream `streamId` under `seed`.

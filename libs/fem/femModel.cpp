@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "fem/deterministicSum.hpp"
+#include "fem/elementStiffnessScale.hpp"
 
 namespace rockfrac::fem {
 
@@ -31,6 +32,7 @@ FemModel::FemModel(const TetMesh& mesh, const FemParameters& parameters)
     constrained_.assign(n, 0);
     prescribedVelocity_.assign(3 * n, 0.0);
     buildNodeElementLists();
+    elementEigenstiffness_ = largestElementEigenstiffness(geometry_, material_->elasticity());
     computeMasses();
     contactNodes_ = boundaryNodes(mesh);
     computeContactStiffness();
@@ -51,21 +53,19 @@ void FemModel::buildNodeElementLists()
 }
 
 // Lumped mass: a quarter of each element's mass on each of its nodes. With mass
-// scaling, an element whose stable step is below the target gets the density that
-// brings it to the target: rho_e = M (dt_target / (safety * contactFactor * h_e))^2.
+// scaling, an element whose stable step 2/omega_e is below the target gets the density
+// that brings it to the target (omega_e^2 = 4 lambda_max(K_e) / (rho_e V_e)).
 void FemModel::computeMasses()
 {
     const double density = parameters_.material.density;
-    const double modulus = material_->elasticity().pWaveModulus();
     const double target = parameters_.massScalingTimeStep;
-    const double reach =
-        parameters_.timeStepSafety * 2.0 /
-        std::sqrt(4.0 + parameters_.contactPenaltyScale * std::max(1.0, parameters_.tangentialPenaltyRatio));
+    const double reach = parameters_.timeStepSafety * contactStepFactor();
     elementDensity_.assign(geometry_.numElements(), density);
     if (target > 0.0)
         for (std::size_t e = 0; e < geometry_.numElements(); ++e) {
-            const double ratio = target / (reach * geometry_.heights[e]);
-            elementDensity_[e] = std::max(density, modulus * ratio * ratio);
+            const double required =
+                elementEigenstiffness_[e] * target * target / (geometry_.volumes[e] * reach * reach);
+            elementDensity_[e] = std::max(density, required);
         }
     nodalMass_.assign(mesh_.numNodes(), 0.0);
     physicalNodalMass_.assign(mesh_.numNodes(), 0.0);
@@ -82,26 +82,38 @@ void FemModel::computeMasses()
     addedMassFraction_ = (scaled - physical) / physical;
 }
 
-// Penalty of a node against a plate, on the scale of its own element stiffness:
-// k = kappa (lambda + 2 mu) V_node / h_node^2. Then k / m_node <= kappa c^2 / h^2,
-// a quarter of kappa times the element's highest eigenvalue (2c/h)^2, which is what
-// the factor 2/sqrt(4 + kappa) in stableTimeStep() accounts for.
+double FemModel::elementFrequencySquared(std::size_t e, double density) const
+{
+    return 4.0 * elementEigenstiffness_[e] / (density * geometry_.volumes[e]);
+}
+
+// The contact springs raise a node's highest frequency: with k <= (kappa/4) m omega_e^2
+// (below) the bound becomes (1 + kappa/4) omega_max^2, hence the factor 2/sqrt(4 + kappa),
+// kappa taken as the larger of the normal and tangential penalty scales.
+double FemModel::contactStepFactor() const
+{
+    return 2.0 / std::sqrt(4.0 + parameters_.contactPenaltyScale *
+                                     std::max(1.0, parameters_.tangentialPenaltyRatio));
+}
+
+// Penalty of a node against a plate, on the scale of its own elements' stiffness:
+// k_i = (kappa / 4) m_i min_{e at i} omega_e^2 with the physical mass and frequencies
+// (about kappa lambda_max(K_e) V_i / V_e), so k_i / m_i <= (kappa/4) omega_max^2 also
+// after mass scaling, and the penalty does not grow with added mass.
 void FemModel::computeContactStiffness()
 {
-    std::vector<double> nodalVolume(mesh_.numNodes(), 0.0);
-    std::vector<double> smallestHeight(mesh_.numNodes(), std::numeric_limits<double>::infinity());
+    const double density = parameters_.material.density;
+    std::vector<double> lowestFrequencySquared(mesh_.numNodes(), std::numeric_limits<double>::infinity());
     for (std::size_t e = 0; e < geometry_.numElements(); ++e)
         for (int a = 0; a < 4; ++a) {
-            const int node = geometry_.nodeIds[4 * e + a];
-            nodalVolume[node] += 0.25 * geometry_.volumes[e];
-            smallestHeight[node] = std::min(smallestHeight[node], geometry_.heights[e]);
+            double& lowest = lowestFrequencySquared[geometry_.nodeIds[4 * e + a]];
+            lowest = std::min(lowest, elementFrequencySquared(e, density));
         }
-    const double modulus = material_->elasticity().pWaveModulus();
     contactStiffness_.resize(contactNodes_.size());
     for (std::size_t j = 0; j < contactNodes_.size(); ++j) {
         const int node = contactNodes_[j];
-        contactStiffness_[j] = parameters_.contactPenaltyScale * modulus * nodalVolume[node] /
-                               (smallestHeight[node] * smallestHeight[node]);
+        contactStiffness_[j] =
+            0.25 * parameters_.contactPenaltyScale * physicalNodalMass_[node] * lowestFrequencySquared[node];
     }
 }
 
@@ -148,15 +160,11 @@ void FemModel::setDisplacements(const std::vector<double>& displacements)
 
 double FemModel::stableTimeStep() const
 {
-    const double modulus = material_->elasticity().pWaveModulus();
-    double smallest = std::numeric_limits<double>::infinity();
+    double highest = 0.0;
     for (std::size_t e = 0; e < geometry_.numElements(); ++e)
-        smallest = std::min(smallest, geometry_.heights[e] / std::sqrt(modulus / elementDensity_[e]));
-    double contactFactor = 1.0;
-    if (!state_.plates.empty())
-        contactFactor = 2.0 / std::sqrt(4.0 + parameters_.contactPenaltyScale *
-                                                  std::max(1.0, parameters_.tangentialPenaltyRatio));
-    return parameters_.timeStepSafety * contactFactor * smallest;
+        highest = std::max(highest, elementFrequencySquared(e, elementDensity_[e]));
+    const double contactFactor = state_.plates.empty() ? 1.0 : contactStepFactor();
+    return parameters_.timeStepSafety * contactFactor * 2.0 / std::sqrt(highest);
 }
 
 void FemModel::gatherInternalForces()
