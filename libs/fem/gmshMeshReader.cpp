@@ -1,5 +1,6 @@
 // Reading tetrahedral meshes through the gmsh C++ API (any msh version gmsh reads).
 #include <gmsh.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <unordered_map>
@@ -108,6 +109,9 @@ TetMesh tetMeshFromGmshModel()
 
 TetMesh readGmshMesh(const std::string& path)
 {
+    // gmsh::initialize() calls omp_set_num_threads(General.NumThreads = 1) for the whole
+    // process: remember the caller's thread count and give it back afterwards.
+    const int callerThreads = omp_get_max_threads();
     const bool ownSession = !gmshIsInitialised();
     if (ownSession) {
         gmsh::initialize(0, nullptr, false);
@@ -116,14 +120,16 @@ TetMesh readGmshMesh(const std::string& path)
     // Clean up whatever happens: finalise our own session, or drop the model we added.
     struct Cleanup {
         bool ownSession;
+        int callerThreads;
         ~Cleanup()
         {
             if (ownSession)
                 gmsh::finalize();
             else
                 gmsh::model::remove();
+            omp_set_num_threads(callerThreads);
         }
-    } cleanup{ownSession};
+    } cleanup{ownSession, callerThreads};
     try {
         gmsh::open(path);
     } catch (const std::exception& e) {

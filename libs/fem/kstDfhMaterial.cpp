@@ -84,14 +84,24 @@ KstDfhPointState KstDfhMaterial::pointState(std::size_t e) const
     return s;
 }
 
-void KstDfhMaterial::setPointState(std::size_t e, const KstDfhPointState& s)
+void KstDfhMaterial::storePlasticHistory(std::size_t e, const KstDfhPointState& s)
 {
     s.plasticStrain.toArray(&plasticStrain_[6 * e]);
     equivalentPlasticStrain_[e] = s.equivalentPlasticStrain;
     compactionStrain_[e] = s.compactionStrain;
+}
+
+void KstDfhMaterial::storeCracks(std::size_t e, const KstDfhPointState& s)
+{
     crackCount_[e] = s.crackCount;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) crackFrame_[9 * e + 3 * i + j] = s.crackFrame.m[i][j];
+}
+
+void KstDfhMaterial::setPointState(std::size_t e, const KstDfhPointState& s)
+{
+    storePlasticHistory(e, s);
+    storeCracks(e, s);
     for (int i = 0; i < 3; ++i) failureStress_[3 * e + i] = s.failureStress[i];
 }
 
@@ -107,9 +117,13 @@ long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, 
     const KstDfhConstants c = constants_;
     return elementLoop(geometry, displacements, stresses, elementForces,
                        [this, &c](std::size_t e, const SymTensor& strain) {
+                           // Only what the update can change is written back (the
+                           // thresholds never change; the frame only when a crack forms).
                            KstDfhPointState state = pointState(e);
+                           const int cracksBefore = state.crackCount;
                            const SymTensor stress = kstDfh::updateStress(c, state, strain);
-                           setPointState(e, state);
+                           storePlasticHistory(e, state);
+                           if (state.crackCount != cracksBefore) storeCracks(e, state);
                            return stress;
                        });
 }

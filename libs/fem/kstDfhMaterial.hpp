@@ -36,6 +36,9 @@ public:
     void setPointState(std::size_t element, const KstDfhPointState& state);
 
 private:
+    void storePlasticHistory(std::size_t element, const KstDfhPointState& state);
+    void storeCracks(std::size_t element, const KstDfhPointState& state);
+
     KstDfhConstants constants_;
     std::vector<double> compactionStrains_, compactionPressures_;
     std::vector<double> plasticStrain_;            // 6 per element

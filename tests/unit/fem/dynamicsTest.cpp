@@ -43,7 +43,7 @@ TEST_CASE("patch test: a uniform strain imposed on the boundary is reproduced ex
 {
     test::GmshSession gmshSession;
     const double size = 0.01;
-    const TetMesh mesh = test::boxMesh(size, size, size, 0.3 * size);
+    const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.3 * size);
     REQUIRE(mesh.numTets() > 100);
     FemParameters parameters = elasticParameters();
     parameters.massDamping = 2.0e5;  // dynamic relaxation towards the static solution
@@ -146,7 +146,7 @@ TEST_CASE("undamped elastic vibration conserves energy", "[fem][energy]")
 {
     test::GmshSession gmshSession;
     const double length = 0.02;
-    const TetMesh mesh = test::boxMesh(length, 0.5 * length, 0.5 * length, 0.2 * length);
+    const TetMesh mesh = test::boxMesh(gmshSession, length, 0.5 * length, 0.5 * length, 0.2 * length);
     FemModel model(mesh, elasticParameters());
     std::vector<double> v(3 * mesh.numNodes());
     for (std::size_t i = 0; i < mesh.numNodes(); ++i) {
@@ -176,7 +176,7 @@ std::vector<double> crushBlock(int threads, int& cracks)
     omp_set_num_threads(threads);
     test::GmshSession gmshSession;
     const double size = 0.01;
-    const TetMesh mesh = test::boxMesh(size, size, size, 0.2 * size);
+    const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.2 * size);
     FemParameters parameters;
     parameters.material.weibullStress = 2e6;
     parameters.material.referenceVolume = 1e-9;
@@ -191,6 +191,7 @@ std::vector<double> crushBlock(int threads, int& cracks)
     model.addPlate(bottom);
     model.addPlate(top);
     const double dt = model.stableTimeStep();
+    REQUIRE(omp_get_max_threads() == threads);  // gmsh must not have changed it
     for (int i = 0; i < 400; ++i) REQUIRE(model.step(dt).ok);
     cracks = 0;
     for (double d : model.elementOutput().damage[0]) cracks += d > 0.5;

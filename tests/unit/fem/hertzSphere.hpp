@@ -20,7 +20,8 @@
 
 namespace rockfrac::fem::test {
 
-inline TetMesh sphereOctantMesh(double radius, double finestSize, double refinedRadius, double coarsestSize)
+inline TetMesh sphereOctantMesh(const GmshSession& session, double radius, double finestSize,
+                                double refinedRadius, double coarsestSize)
 {
     gmsh::model::occ::addSphere(0, 0, 0, radius, -1, -M_PI / 2, 0, M_PI / 2);
     gmsh::model::occ::synchronize();
@@ -40,8 +41,7 @@ inline TetMesh sphereOctantMesh(double radius, double finestSize, double refined
     gmsh::option::setNumber("Mesh.CharacteristicLengthExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.CharacteristicLengthFromPoints", 0);
     gmsh::option::setNumber("Mesh.CharacteristicLengthFromCurvature", 0);
-    gmsh::model::mesh::generate(3);
-    return tetMeshFromGmshModel();
+    return session.generate();
 }
 
 inline std::vector<int> nodesOnPlane(const TetMesh& mesh, int axis, double tolerance)
@@ -72,8 +72,9 @@ inline HertzResult runHertzSphere(const HertzSettings& settings)
     GmshSession gmshSession;
     const double radius = 0.01, maxApproach = settings.approachOverRadius * radius;
     const double contactRadius = std::sqrt(radius * maxApproach);
-    const TetMesh mesh = sphereOctantMesh(radius, settings.finestOverContactRadius * contactRadius,
-                                          1.5 * contactRadius, 0.2 * radius);
+    const TetMesh mesh =
+        sphereOctantMesh(gmshSession, radius, settings.finestOverContactRadius * contactRadius,
+                         1.5 * contactRadius, 0.2 * radius);
     FemParameters parameters;
     parameters.materialName = "linearElastic";
     parameters.contactPenaltyScale = settings.penaltyScale;

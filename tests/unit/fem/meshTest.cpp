@@ -1,4 +1,6 @@
 // Tet geometry, quality checks and gmsh reading.
+#include <omp.h>
+
 #include <catch2/catch.hpp>
 #include <cstdio>
 
@@ -43,7 +45,7 @@ TEST_CASE("readGmshMesh reads msh 2 and msh 4 files and their physical groups", 
     std::size_t numTets = 0;
     {
         test::GmshSession gmshSession;
-        const TetMesh generated = test::boxMesh(1, 1, 1, 0.4);
+        const TetMesh generated = test::boxMesh(gmshSession, 1, 1, 1, 0.4);
         numTets = generated.numTets();
         gmsh::model::addPhysicalGroup(3, {1}, 7);
         gmsh::model::setPhysicalName(3, 7, "rock");
@@ -54,8 +56,10 @@ TEST_CASE("readGmshMesh reads msh 2 and msh 4 files and their physical groups", 
         gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
         gmsh::write(path2);
     }
+    const int threads = omp_get_max_threads();
     for (const auto& path : {path4, path2}) {
         const TetMesh mesh = readGmshMesh(path);  // gmsh not initialised here
+        CHECK(omp_get_max_threads() == threads);  // gmsh::initialize must not leak its thread count
         CHECK(mesh.numTets() == numTets);
         CHECK(mesh.tetTags[0] == 7);
         REQUIRE(mesh.nodeGroups.count("left") == 1);
