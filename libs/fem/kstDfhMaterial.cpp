@@ -1,0 +1,141 @@
+#include "fem/kstDfhMaterial.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "fem/elementLoop.hpp"
+#include "fem/weibullStrength.hpp"
+
+namespace rockfrac::fem {
+
+namespace {
+
+void checkCompactionCurve(const std::vector<std::pair<double, double>>& curve)
+{
+    double previousStrain = 0.0;
+    for (const auto& [strain, pressure] : curve) {
+        if (!(strain > previousStrain))
+            throw UserError("kstDfh: the compaction curve strains must be positive and increasing");
+        if (!(pressure >= 0.0)) throw UserError("kstDfh: the compaction curve pressures must be >= 0");
+        previousStrain = strain;
+    }
+}
+
+}  // namespace
+
+KstDfhMaterial::KstDfhMaterial(const MaterialParameters& parameters) : FemMaterial(parameters)
+{
+    checkCompactionCurve(parameters.compactionCurve);
+    constants_.elastic = elasticity_;
+    constants_.a0 = parameters.kstA0;
+    constants_.a1 = parameters.kstA1;
+    constants_.a2 = parameters.kstA2;
+    constants_.pressureCutoff =
+        std::isnan(parameters.tensilePressureCutoff)
+            ? automaticPressureCutoff(parameters.kstA0, parameters.kstA1, parameters.kstA2)
+            : parameters.tensilePressureCutoff;
+    if (constants_.pressureCutoff > 0.0)
+        throw UserError("kstDfh: the tensile pressure cutoff must be <= 0 (P is positive in compression)");
+    constants_.damageEnabled = parameters.damageEnabled;
+    constants_.crackShearRetention = parameters.crackShearRetention;
+    if (!(parameters.crackShearRetention >= 0.0 && parameters.crackShearRetention <= 1.0))
+        throw UserError("kstDfh: crackShearRetention must lie in [0, 1]");
+    for (const auto& [strain, pressure] : parameters.compactionCurve) {
+        compactionStrains_.push_back(strain);
+        compactionPressures_.push_back(pressure);
+    }
+    constants_.compactionStrains = compactionStrains_.data();
+    constants_.compactionPressures = compactionPressures_.data();
+    constants_.compactionPoints = static_cast<int>(compactionStrains_.size());
+}
+
+void KstDfhMaterial::initialise(const ElementGeometry& geometry)
+{
+    const std::size_t n = geometry.numElements();
+    plasticStrain_.assign(6 * n, 0.0);
+    equivalentPlasticStrain_.assign(n, 0.0);
+    compactionStrain_.assign(n, 0.0);
+    crackCount_.assign(n, 0.0);
+    crackFrame_.assign(9 * n, 0.0);
+    failureStress_.assign(3 * n, std::numeric_limits<double>::infinity());
+    for (std::size_t e = 0; e < n; ++e)
+        for (int i = 0; i < 3; ++i) crackFrame_[9 * e + 4 * i] = 1.0;
+    if (!parameters_.damageEnabled) return;
+    const WeibullStrength weibull(parameters_.weibullModulus, parameters_.weibullStress,
+                                  parameters_.referenceVolume);
+    for (std::size_t e = 0; e < n; ++e) {
+        const auto thresholds = weibull.elementThresholds(parameters_.seed, e, geometry.volumes[e]);
+        for (int i = 0; i < 3; ++i) failureStress_[3 * e + i] = thresholds[i];
+    }
+}
+
+KstDfhPointState KstDfhMaterial::pointState(std::size_t e) const
+{
+    KstDfhPointState s;
+    s.plasticStrain = SymTensor::fromArray(&plasticStrain_[6 * e]);
+    s.equivalentPlasticStrain = equivalentPlasticStrain_[e];
+    s.compactionStrain = compactionStrain_[e];
+    s.crackCount = static_cast<int>(crackCount_[e]);
+    if (s.crackCount > 0)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) s.crackFrame.m[i][j] = crackFrame_[9 * e + 3 * i + j];
+    for (int i = 0; i < 3; ++i) s.failureStress[i] = failureStress_[3 * e + i];
+    return s;
+}
+
+void KstDfhMaterial::storePlasticHistory(std::size_t e, const KstDfhPointState& s)
+{
+    s.plasticStrain.toArray(&plasticStrain_[6 * e]);
+    equivalentPlasticStrain_[e] = s.equivalentPlasticStrain;
+    compactionStrain_[e] = s.compactionStrain;
+}
+
+void KstDfhMaterial::storeCracks(std::size_t e, const KstDfhPointState& s)
+{
+    crackCount_[e] = s.crackCount;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) crackFrame_[9 * e + 3 * i + j] = s.crackFrame.m[i][j];
+}
+
+void KstDfhMaterial::setPointState(std::size_t e, const KstDfhPointState& s)
+{
+    storePlasticHistory(e, s);
+    storeCracks(e, s);
+    for (int i = 0; i < 3; ++i) failureStress_[3 * e + i] = s.failureStress[i];
+}
+
+Vec3 KstDfhMaterial::crackNormal(std::size_t e, int direction) const
+{
+    const double* row = &crackFrame_[9 * e + 3 * direction];
+    return {row[0], row[1], row[2]};
+}
+
+long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, const double* displacements,
+                                               double* stresses, double* elementForces)
+{
+    const KstDfhConstants c = constants_;
+    return elementLoop(geometry, displacements, stresses, elementForces,
+                       [this, &c](std::size_t e, const SymTensor& strain) {
+                           // Only what the update can change is written back (the
+                           // thresholds never change; the frame only when a crack forms).
+                           KstDfhPointState state = pointState(e);
+                           const int cracksBefore = state.crackCount;
+                           const SymTensor stress = kstDfh::updateStress(c, state, strain);
+                           storePlasticHistory(e, state);
+                           if (state.crackCount != cracksBefore) storeCracks(e, state);
+                           return stress;
+                       });
+}
+
+std::vector<StateField> KstDfhMaterial::stateFields()
+{
+    return {{"plasticStrain", 6, &plasticStrain_},
+            {"equivalentPlasticStrain", 1, &equivalentPlasticStrain_},
+            {"compactionStrain", 1, &compactionStrain_},
+            {"crackCount", 1, &crackCount_},
+            {"crackFrame", 9, &crackFrame_},
+            {"failureStress", 3, &failureStress_}};
+}
+
+}  // namespace rockfrac::fem

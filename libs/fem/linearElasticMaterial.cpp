@@ -1,0 +1,16 @@
+#include "fem/linearElasticMaterial.hpp"
+
+#include "fem/elementLoop.hpp"
+
+namespace rockfrac::fem {
+
+long long LinearElasticMaterial::computeElementForces(const ElementGeometry& geometry,
+                                                      const double* displacements, double* stresses,
+                                                      double* elementForces)
+{
+    const IsotropicElasticity elastic = elasticity_;
+    return elementLoop(geometry, displacements, stresses, elementForces,
+                       [elastic](std::size_t, const SymTensor& strain) { return elastic.stress(strain); });
+}
+
+}  // namespace rockfrac::fem

@@ -1,0 +1,137 @@
+// KST-DFH at one material point: KST return, tensile cutoff, DFH cracking.
+#include <catch2/catch.hpp>
+
+#include "core/error.hpp"
+#include "fem/kstDfhMaterial.hpp"
+
+using namespace rockfrac;
+using namespace rockfrac::fem;
+
+namespace {
+
+double pressureOf(const SymTensor& s)
+{
+    return -trace(s) / 3.0;
+}
+
+SymTensor compressionWithShear(double volumetric, double shear)
+{
+    SymTensor e = SymTensor::isotropic(-volumetric / 3.0);
+    e.xy = shear;
+    e.zx = 0.3 * shear;
+    return e;
+}
+
+}  // namespace
+
+TEST_CASE("KST: a point driven past the surface returns to it at fixed pressure and stays on it",
+          "[fem][kst]")
+{
+    MaterialParameters p;
+    p.damageEnabled = false;
+    const KstDfhMaterial material(p);
+    const KstDfhConstants& c = material.constants();
+    KstDfhPointState state;
+    const double bulk = c.elastic.bulkModulus();
+    int plasticSteps = 0;
+    for (int i = 1; i <= 200; ++i) {
+        // Pressure grows to about 150 MPa while the shear strain grows beyond yield.
+        const double volumetric = 2.0e-5 * i, shear = 2.0e-5 * i;
+        const SymTensor strain = compressionWithShear(volumetric, shear);
+        const SymTensor trialElastic = c.elastic.stress(strain - state.plasticStrain);
+        const double trialEquivalent = vonMises(trialElastic);
+        const SymTensor stress = kstDfh::updateStress(c, state, strain);
+        const double pressure = pressureOf(stress);
+        CHECK(pressure == Approx(bulk * volumetric).epsilon(1e-12));  // return keeps P
+        const double yield = c.yieldStress(pressure);
+        if (trialEquivalent > yield) {
+            ++plasticSteps;
+            CHECK(vonMises(stress) == Approx(yield).epsilon(1e-8));
+        } else {
+            CHECK(vonMises(stress) == Approx(trialEquivalent).epsilon(1e-12));
+        }
+    }
+    CHECK(plasticSteps > 50);  // the path did reach and follow the surface
+    CHECK(state.equivalentPlasticStrain > 0.0);
+}
+
+TEST_CASE("KST: hydrostatic tension beyond the cutoff returns to the apex", "[fem][kst]")
+{
+    MaterialParameters p;
+    p.damageEnabled = false;
+    const KstDfhMaterial material(p);
+    const KstDfhConstants& c = material.constants();
+    // Default cutoff: upper root of 1e16 + 3.1e8 P + 2 P^2, about -46 MPa.
+    CHECK(c.pressureCutoff == Approx((-3.1e8 + std::sqrt(3.1e8 * 3.1e8 - 8e16)) / 4.0));
+    CHECK(c.yieldStress(-60e6) == 0.0);  // the clamped radicand
+    KstDfhPointState state;
+    const SymTensor stress = kstDfh::updateStress(c, state, SymTensor::isotropic(1e-3));
+    CHECK(pressureOf(stress) == Approx(c.pressureCutoff).epsilon(1e-12));
+    CHECK(vonMises(stress) == Approx(0.0).margin(1e-6));
+}
+
+TEST_CASE("DFH: uniaxial tension cracks at the first threshold; the crack carries compression only",
+          "[fem][dfh]")
+{
+    MaterialParameters p;
+    p.referenceVolume = 1e-9;
+    const KstDfhMaterial material(p);
+    const KstDfhConstants& c = material.constants();
+    const double E = p.youngsModulus, nu = p.poissonRatio;
+    KstDfhPointState state;
+    state.failureStress[0] = 10e6, state.failureStress[1] = 20e6, state.failureStress[2] = 30e6;
+    auto uniaxial = [nu](double e) { return SymTensor{e, -nu * e, -nu * e, 0, 0, 0}; };
+
+    const double breakingStrain = 10e6 / E;
+    SymTensor s = kstDfh::updateStress(c, state, uniaxial(0.999 * breakingStrain));
+    CHECK(state.crackCount == 0);
+    CHECK(s.xx == Approx(0.999 * 10e6).epsilon(1e-10));
+    s = kstDfh::updateStress(c, state, uniaxial(1.001 * breakingStrain));
+    REQUIRE(state.crackCount == 1);
+    CHECK(std::abs(state.crackFrame.m[0][0]) == Approx(1.0));  // crack normal along x
+    CHECK(s.xx == Approx(0.0).margin(1e-3));
+    s = kstDfh::updateStress(c, state, uniaxial(5 * breakingStrain));  // open: no tension
+    CHECK(s.xx == Approx(0.0).margin(1e-3));
+    CHECK(state.crackCount == 1);
+    s = kstDfh::updateStress(c, state, uniaxial(-2 * breakingStrain));  // closed: full stiffness
+    CHECK(s.xx == Approx(-20e6).epsilon(1e-10));
+    // The perpendicular direction still carries tension: with the crack open (sigma_xx = 0)
+    // and eps_zz = 0 the y direction responds with the plane-stress modulus E / (1 - nu^2).
+    const double ey = 1e-4;
+    s = kstDfh::updateStress(c, state, SymTensor{5 * breakingStrain, ey, 0, 0, 0, 0});
+    CHECK(s.xx == Approx(0.0).margin(1e-3));
+    CHECK(s.yy == Approx(E / (1 - nu * nu) * ey).epsilon(1e-10));
+    CHECK(state.crackCount == 1);
+    // Past the second threshold the second crack forms perpendicular to the first.
+    s = kstDfh::updateStress(c, state, SymTensor{5 * breakingStrain, 4 * ey, 0, 0, 0, 0});
+    REQUIRE(state.crackCount == 2);
+    CHECK(std::abs(state.crackFrame.m[1][1]) == Approx(1.0));
+    CHECK(s.yy == Approx(0.0).margin(1e-3));
+}
+
+TEST_CASE("DFH: an open crack keeps only the retained fraction of its shear stiffness", "[fem][dfh]")
+{
+    MaterialParameters p;
+    p.referenceVolume = 1e-9;
+    p.crackShearRetention = 0.1;
+    const KstDfhMaterial material(p);
+    const KstDfhConstants& c = material.constants();
+    KstDfhPointState state;
+    state.crackCount = 1;  // crack normal x (identity frame)
+    state.failureStress[1] = state.failureStress[2] = 1e30;
+    const double mu = c.elastic.shearModulus;
+    SymTensor strain{1e-4, 0, 0, 1e-5, 2e-5, 0};
+    SymTensor s = kstDfh::updateStress(c, state, strain);
+    CHECK(s.xy == Approx(0.1 * 2 * mu * 1e-5));  // plane containing the open normal
+    CHECK(s.yz == Approx(2 * mu * 2e-5));        // intact plane
+    strain.xx = -1e-4;                           // closed crack: full shear
+    s = kstDfh::updateStress(c, state, strain);
+    CHECK(s.xy == Approx(2 * mu * 1e-5));
+}
+
+TEST_CASE("unknown material names list the known ones", "[fem]")
+{
+    CHECK_THROWS_WITH(makeFemMaterial("granite", MaterialParameters{}),
+                      Catch::Contains("linearElastic") && Catch::Contains("kstDfh"));
+    CHECK(makeFemMaterial("kstDfh", MaterialParameters{})->typeName() == "kstDfh");
+}

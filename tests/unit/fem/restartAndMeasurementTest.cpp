@@ -1,0 +1,99 @@
+// Restart continuity, the virtual extensometer and the failure-load detector.
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "fem/measurements.hpp"
+#include "femTestSupport.hpp"
+
+using namespace rockfrac;
+using namespace rockfrac::fem;
+
+namespace {
+
+FemParameters crushingParameters()
+{
+    FemParameters parameters;
+    parameters.material.weibullStress = 2e6;
+    parameters.material.referenceVolume = 1e-9;
+    parameters.massDamping = 1e4;
+    return parameters;
+}
+
+void addCrushingPlates(FemModel& model, double size)
+{
+    RigidPlate bottom, top;
+    top.point = {0, 0, size};
+    top.normal = {0, 0, -1};
+    top.velocity = {0.3, 0.0, -2.0};
+    model.addPlate(bottom);
+    model.addPlate(top);
+}
+
+}  // namespace
+
+TEST_CASE("a restarted model continues bit for bit", "[fem][restart]")
+{
+    test::GmshSession gmshSession;
+    const double size = 0.01;
+    const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.25 * size);
+    FemModel original(mesh, crushingParameters());
+    addCrushingPlates(original, size);
+    const double dt = original.stableTimeStep();
+    for (int i = 0; i < 200; ++i) REQUIRE(original.step(dt).ok);
+
+    // What a restart file holds: the FemState and the material's state fields.
+    const FemState saved = original.state();
+    std::vector<std::vector<double>> savedFields;
+    for (const auto& field : original.material().stateFields()) savedFields.push_back(*field.values);
+
+    FemModel restarted(mesh, crushingParameters());
+    addCrushingPlates(restarted, size);
+    restarted.setState(saved);
+    auto fields = restarted.material().stateFields();
+    for (std::size_t k = 0; k < fields.size(); ++k) *fields[k].values = savedFields[k];
+
+    for (int i = 0; i < 100; ++i) {
+        REQUIRE(original.step(dt).ok);
+        REQUIRE(restarted.step(dt).ok);
+    }
+    const auto& a = original.state().displacements;
+    const auto& b = restarted.state().displacements;
+    CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+    CHECK(original.plate(1).force.z == restarted.plate(1).force.z);
+    CHECK(original.energy().internalWork == restarted.energy().internalWork);
+}
+
+TEST_CASE("the virtual extensometer reads the strain along its axis times its length", "[fem][measure]")
+{
+    test::GmshSession gmshSession;
+    const double size = 0.02;
+    const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.3 * size);
+    FemParameters parameters;
+    parameters.materialName = "linearElastic";
+    FemModel model(mesh, parameters);
+    // u = G x with G_yy = -1e-3 and shear and rotation parts that do not stretch y.
+    std::vector<double> u(3 * mesh.numNodes());
+    for (std::size_t i = 0; i < mesh.numNodes(); ++i) {
+        const Vec3& x = mesh.nodes[i];
+        u[3 * i] = 2e-4 * x.y;
+        u[3 * i + 1] = -1e-3 * x.y - 2e-4 * x.x;
+        u[3 * i + 2] = 5e-4 * x.x;
+    }
+    model.setDisplacements(u);
+    const double length = 0.01;
+    const VirtualExtensometer extensometer(mesh, {0.5 * size, 0.5 * size, 0.5 * size}, {0, 1, 0}, length);
+    CHECK(extensometer.elongation(model) == Approx(-1e-3 * length).epsilon(1e-10));
+    CHECK_THROWS_AS(VirtualExtensometer(mesh, {0.5 * size, 0.5 * size, 0.5 * size}, {0, 1, 0}, 3 * size),
+                    UserError);
+}
+
+TEST_CASE("failure load: the running maximum at the first drop beyond the fraction", "[fem][measure]")
+{
+    FailureLoadDetector detector(0.2);
+    for (double force : {1.0, 5.0, 9.0, 8.0, 10.0, 8.5}) CHECK_FALSE(detector.update(force));
+    CHECK(detector.update(7.9));  // 21 % below the maximum 10
+    CHECK(detector.failureLoad() == 10.0);
+    CHECK(detector.update(12.0));  // stays failed with the first peak
+    CHECK(detector.failureLoad() == 10.0);
+}
