@@ -342,7 +342,7 @@ std::string meshInfoText(const MeshInfo& info)
 {
     std::ostringstream s;
     s << "/*--------------------------------*- rockfrac -*-----------------------------*\\\n"
-         "  Bonded Voronoi mesh written by voronoiMesh (docs/file-formats-voronoiMesh.md)\n"
+         "  Bonded Voronoi mesh written by voronoiMesh (docs/file-formats.md)\n"
          "\\*---------------------------------------------------------------------------*/\n"
          "FoamFile\n{\n    format      binary;\n    class       voronoiMeshInfo;\n    object      "
          "meshInfo;\n}\n\n";

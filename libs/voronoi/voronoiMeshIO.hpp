@@ -2,7 +2,7 @@
 // The files of a bonded Voronoi mesh in a case: constant/voronoiMesh/ holds an
 // ASCII header `meshInfo` (version, counts, provenance, checksums) and four
 // little-endian binary files `cells`, `vertices`, `faces` and `bonds`
-// (docs/file-formats-voronoiMesh.md). Bonds are stored as the bonded face
+// (docs/file-formats.md). Bonds are stored as the bonded face
 // pairs; their geometry is rebuilt on reading by the same function the
 // tessellation uses, so a read mesh is bit-identical to the written one.
 #include <filesystem>
