@@ -56,11 +56,12 @@ void checkCurveColumn(const fs::path& file, const TimeSeries& series, const std:
                         "]; write it in [" + unit + "] (SI units, convert the values)");
 }
 
-Specimen readSpecimen(const Dictionary& specimenDict, const Dictionary* defaultGeometry,
-                      const fs::path& directory)
+// `id` is the specimen's keyword (the sub-dictionary's name() is its whole path).
+Specimen readSpecimen(const std::string& id, const Dictionary& specimenDict,
+                      const Dictionary* defaultGeometry, const fs::path& directory)
 {
     Specimen specimen;
-    specimen.id = specimenDict.name();
+    specimen.id = id;
     for (const std::string& key : specimenDict.keys())
         if (std::find(specimenKeywords.begin(), specimenKeywords.end(), key) == specimenKeywords.end())
             throw UserError(specimenDict.entry(key).keywordLocation.str() + ": unknown specimen entry '" +
@@ -122,7 +123,8 @@ MeasurementSet readMeasurements(const fs::path& path)
             throw UserError(entry.keywordLocation.str() + ": '" + entry.keyword +
                             "' is not a specimen; expected '" + entry.keyword +
                             " { failureLoad [N] <value>; }'");
-        set.specimens.push_back(readSpecimen(*entry.dict, defaultGeometry, path.parent_path()));
+        set.specimens.push_back(
+            readSpecimen(entry.keyword, *entry.dict, defaultGeometry, path.parent_path()));
     }
     if (set.specimens.empty())
         throw UserError(specimens.endLocation().str() +
