@@ -17,8 +17,9 @@ namespace rockfrac::stats {
 // what happens to its children (and can signal the child's whole group).
 // UserError when the process cannot be created; a program that cannot be
 // executed exits with 127 and says why in the log, like a shell.
+// `environment` holds extra NAME=value entries added to the parent's environment.
 pid_t startProcess(const std::vector<std::string>& argv, const std::filesystem::path& workingDirectory,
-                   const std::filesystem::path& logFile);
+                   const std::filesystem::path& logFile, const std::vector<std::string>& environment = {});
 
 // Exit status as a shell reports it: the exit code, or 128 + the signal number.
 int shellExitStatus(int waitStatus);
