@@ -1,5 +1,7 @@
 #include "stats/gnuplot.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -43,6 +45,48 @@ std::string gnuplotDataBlock(const std::string& name, const std::vector<std::vec
     }
     block << "EOD\n";
     return block.str();
+}
+
+DisplayScale chooseDisplayScale(double largestMagnitude, const std::string& siUnit)
+{
+    // Prefixes only for simple units (N, m, Pa, J, W, s); "-" and compound units stay as they are.
+    const bool prefixable =
+        siUnit == "N" || siUnit == "m" || siUnit == "Pa" || siUnit == "J" || siUnit == "W" || siUnit == "s";
+    if (!prefixable || !(largestMagnitude > 0.0)) return {1.0, siUnit.empty() ? "-" : siUnit};
+    static const std::vector<std::pair<double, const char*>> prefixes = {
+        {1e9, "G"}, {1e6, "M"}, {1e3, "k"}, {1.0, ""}, {1e-3, "m"}, {1e-6, "µ"}, {1e-9, "n"}};
+    for (const auto& [size, prefix] : prefixes)
+        if (largestMagnitude >= size) return {1.0 / size, prefix + siUnit};
+    return {1e9, "n" + siUnit};
+}
+
+std::string formatQuantity(double value, const std::string& siUnit)
+{
+    const DisplayScale scale = chooseDisplayScale(std::fabs(value), siUnit);
+    std::ostringstream text;
+    text << std::setprecision(3) << value * scale.factor << " " << scale.unit;
+    return text.str();
+}
+
+std::string legendBelowPlot(int entries)
+{
+    char margin[32];
+    std::snprintf(margin, sizeof(margin), "%.1f", 4.0 + 1.3 * entries);
+    return std::string("set key below box spacing 1.2\nset bmargin ") + margin + "\n";
+}
+
+std::string seriesColour(std::size_t i)
+{
+    static const char* const palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#56B4E9", "#E69F00"};
+    return std::string("lc rgb \"") + palette[i % 6] + "\"";
+}
+
+std::vector<std::string> splitCommaList(const std::string& text)
+{
+    std::vector<std::string> parts;
+    std::istringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
+    return parts;
 }
 
 namespace {

@@ -21,6 +21,27 @@ std::string gnuplotString(const std::string& text);
 // blocks when `rows` holds an empty row (gnuplot's "index").
 std::string gnuplotDataBlock(const std::string& name, const std::vector<std::vector<double>>& rows);
 
+// How values are shown on an axis: SI values times `factor`, in `unit`
+// with a prefix chosen from the largest magnitude (12.3e3 N -> 12.3 kN).
+struct DisplayScale {
+    double factor = 1.0;
+    std::string unit;  // e.g. "kN", "mm", "-"
+};
+DisplayScale chooseDisplayScale(double largestMagnitude, const std::string& siUnit);
+// "12.3 kN": a value with 3 significant digits in its display scale.
+std::string formatQuantity(double value, const std::string& siUnit);
+
+// Legend in a box below the plot, where it never hides a curve; the bottom
+// margin is sized for `entries` lines so that the box clears the x label.
+std::string legendBelowPlot(int entries);
+
+// `lc rgb "#0072B2"`: the i-th colour of the Okabe–Ito palette, readable by
+// colour-blind readers and distinct from the black and grey of measured data.
+std::string seriesColour(std::size_t i);
+
+// A comma-separated option value ("granite,limestone") as its parts.
+std::vector<std::string> splitCommaList(const std::string& text);
+
 // Draw `commands` (everything after terminal and output) into `png`, a
 // width × height picture with the pngcairo terminal, or png when gnuplot was
 // built without cairo. UserError with gnuplot's own message when it fails.

@@ -47,9 +47,6 @@ LabelledSample readTableColumn(const fs::path& file, const std::string& column)
 LabelledSample readSample(const fs::path& file, const std::string& column)
 {
     if (isTextTable(file)) return readTableColumn(file, column);
-    if (!column.empty() && column != "failureLoad")
-        throw UserError(file.string() + ": a measurements dictionary holds failure loads, not '" + column +
-                        "'");
     const MeasurementSet set = readMeasurements(file);
     return {set.label(), "N", set.failureLoads()};
 }

@@ -15,8 +15,8 @@ struct LabelledSample {
     Sample values;
 };
 
-// `column` is used for tables and must be empty or "failureLoad" for a
-// measurements dictionary. UserError when the file has no such column or no values.
+// `column` selects the column of a table; a measurements dictionary always
+// gives its failure loads. UserError when the file has no such column or no values.
 LabelledSample readSample(const std::filesystem::path& file, const std::string& column);
 
 // Whether the file is a '#'-headed table rather than a dictionary.

@@ -48,8 +48,8 @@ std::vector<char*> cStrings(const std::vector<std::string>& words)
 
 }  // namespace
 
-pid_t startProcess(const std::vector<std::string>& argv, const fs::path& workingDirectory, const fs::path& logFile,
-                   const std::vector<std::string>& environment)
+pid_t startProcess(const std::vector<std::string>& argv, const fs::path& workingDirectory,
+                   const fs::path& logFile, const std::vector<std::string>& environment)
 {
     std::vector<std::string> fullEnvironment;
     for (char** entry = environ; *entry; ++entry) fullEnvironment.emplace_back(*entry);
@@ -59,7 +59,8 @@ pid_t startProcess(const std::vector<std::string>& argv, const fs::path& working
     const std::string directory = workingDirectory.string(), log = fs::absolute(logFile).string();
     const pid_t pid = fork();
     if (pid < 0) throw UserError("cannot start '" + argv.front() + "': " + std::strerror(errno));
-    if (pid == 0) becomeChild(argvPointers.data(), environmentPointers.data(), directory.c_str(), log.c_str());
+    if (pid == 0)
+        becomeChild(argvPointers.data(), environmentPointers.data(), directory.c_str(), log.c_str());
     setpgid(pid, pid);  // also in the parent, so the group exists before anyone signals it
     return pid;
 }
