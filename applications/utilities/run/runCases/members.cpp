@@ -1,9 +1,5 @@
 #include "members.hpp"
-
-#include <unistd.h>
-
 #include <algorithm>
-#include <sstream>
 
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
