@@ -1,4 +1,5 @@
 #include "members.hpp"
+
 #include <algorithm>
 
 #include "core/atomicFile.hpp"
