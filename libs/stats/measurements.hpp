@@ -1,6 +1,6 @@
 #pragma once
 // Measured data of a laboratory series: the `measurements` dictionary of
-// docs/file-formats-measurements.md, with its optional force–displacement
+// docs/file-formats.md, "Measured data", with its optional force–displacement
 // curves (.dat files). Every physical quantity carries a dimension set, so a
 // value in kN or mm cannot slip in unnoticed.
 #include <filesystem>

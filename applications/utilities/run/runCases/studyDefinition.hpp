@@ -1,7 +1,7 @@
 #pragma once
 // A parameter study as system/runCasesDict describes it: the template case,
 // the command, the parameters and their design, the seeds, and the results to
-// collect (docs/user-guide-runCases.md). Everything is checked here, before a
+// collect (docs/user-guide.md, "runCases"). Everything is checked here, before a
 // member is made, so a typo stops the study at once with one clear line.
 #include <cstdint>
 #include <filesystem>
