@@ -110,8 +110,13 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
         model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
                               model.cells().angular_velocity[c]);
     const double dt = 0.02 * model.rayleighTimeStep();
-    for (int i = 0; i < 1500; ++i) model.step(dt);
+    int wall_contacts = 0;  // the most at any step
+    for (int i = 0; i < 1500; ++i) {
+        model.step(dt);
+        wall_contacts = std::max(wall_contacts, model.counters().wall_contacts_active);
+    }
     counters = model.counters();
+    counters.wall_contacts_active = wall_contacts;
     return model.cells().position;
 }
 
