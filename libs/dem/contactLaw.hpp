@@ -39,6 +39,36 @@ struct ContactOutput {
     double friction_dissipation = 0.0;  // energy lost by sliding in this call [J]
 };
 
+// One point of a contact patch: the sphere of one core vertex against a wall
+// (docs/theory-dem.md §7). Every point carries a normal spring of its own.
+struct PatchPoint {
+    Vec3 point;              // contact point (middle of the overlap) [m]
+    Vec3 normal;             // unit, from the wall into the cell
+    Vec3 relative_velocity;  // cell minus wall at the point [m/s]
+    double overlap = 0.0;    // > 0 [m]
+};
+
+// Most points of one patch; the kernel keeps the deepest ones beyond that.
+constexpr int max_patch_points = 64;
+
+// A patch of points of one cell against one wall, sharing one tangential spring.
+struct ContactPatchInput {
+    const PatchPoint* points = nullptr;
+    int n_points = 0;
+    Vec3 centre;                    // the cell's centroid: torques are about it [m]
+    double effective_radius = 0.0;  // R* of every point [m]
+    double effective_mass = 0.0;    // m* of the cell [kg]
+    double dt = 0.0;
+};
+
+struct ContactPatchOutput {
+    Vec3 force;   // on the cell [N]
+    Vec3 torque;  // on the cell about centre [N m]
+    double elastic_energy = 0.0;
+    double damping_power = 0.0;
+    double friction_dissipation = 0.0;
+};
+
 // Contact status of a pair or wall item after a kernel call.
 enum ContactStatus : unsigned char { contactNone = 0, contactActive = 1, contactCoresIntersect = 2 };
 
@@ -225,18 +255,6 @@ struct WallKernelArgs {
     double* wall_power = nullptr;  // force on the cell . wall velocity at the contact [W]
 };
 
-// Plate: the core's vertex deepest along -n decides; overlap r_d - signed distance.
-RF_HD inline ContactGeometry plateGeometry(const ConvexVertexSet& core, double radius, const WallPose& wall)
-{
-    ContactGeometry g;
-    const Vec3 deepest = supportPoint(core, -wall.normal);
-    const double signed_distance = dot(deepest - wall.origin, wall.normal);
-    g.normal = wall.normal;
-    g.overlap = radius - signed_distance;
-    g.point = deepest - (radius - 0.5 * g.overlap) * wall.normal;
-    return g;
-}
-
 // Triangulated surface: GJK between the core and each candidate triangle; the
 // nearest triangle makes the contact (one contact per cell and surface).
 RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
@@ -260,6 +278,104 @@ RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const C
     return best;
 }
 
+// Add a point to a patch; when full, the shallowest point gives way to a deeper one.
+RF_HD inline void addPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
+{
+    if (n < max_patch_points) {
+        points[n++] = p;
+        return;
+    }
+    int shallowest = 0;
+    for (int i = 1; i < n; ++i)
+        if (points[i].overlap < points[shallowest].overlap) shallowest = i;
+    if (p.overlap > points[shallowest].overlap) points[shallowest] = p;
+}
+
+RF_HD inline Vec3 wallPointVelocity(const WallPose& wall, const Vec3& point)
+{
+    return wall.velocity + cross(wall.angular_velocity, point - wall.origin);
+}
+
+// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
+RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    const Vec3 bp = p - b;
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+    const Vec3 cp = p - c;
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+        return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+    const double denominator = 1.0 / (va + vb + vc);
+    return a + (vb * denominator) * ab + (vc * denominator) * ac;
+}
+
+// The patch of a cell against a wall: every core vertex whose sphere (radius r_d)
+// overlaps the wall is a point. Plate: overlap r_d - signed distance of the vertex.
+// Triangulated surface: the nearest candidate triangle of each vertex (so a vertex
+// over a shared edge of a flat surface counts once); a vertex behind a triangle's
+// plane (core cutting the surface) takes the triangle's normal. Returns the number
+// of points; sets cores_intersect when a vertex is behind a triangle.
+RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, double radius,
+                           const WallPose& wall, int item, PatchPoint* points, bool& cores_intersect)
+{
+    int n = 0;
+    cores_intersect = false;
+    for (int v = 0; v < core.n_vertices; ++v) {
+        const Vec3 x = worldVertex(core, v);
+        PatchPoint p;
+        if (wall.kind == wallPlate) {
+            p.normal = wall.normal;
+            p.overlap = radius - dot(x - wall.origin, wall.normal);
+        } else {
+            double best = -1e300;
+            bool behind = false;
+            for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
+                const Vec3* t = a.triangle_vertices + 3 * a.item_triangles[e];
+                const Vec3 t0 = wall.origin + wall.rotation * t[0];
+                const Vec3 t1 = wall.origin + wall.rotation * t[1];
+                const Vec3 t2 = wall.origin + wall.rotation * t[2];
+                Vec3 face_normal = normalised(cross(t1 - t0, t2 - t0));
+                if (dot(core.position - t0, face_normal) < 0.0) face_normal = -face_normal;
+                const Vec3 q = closestPointOnTriangle(x, t0, t1, t2);
+                const Vec3 gap = x - q;
+                const double distance = norm(gap);
+                double overlap;
+                Vec3 normal;
+                bool cut = false;
+                if (dot(gap, face_normal) < 0.0) {  // behind the triangle's plane
+                    overlap = radius + distance;
+                    normal = face_normal;
+                    cut = true;
+                } else {
+                    overlap = radius - distance;
+                    normal = distance > 1e-12 * radius ? gap / distance : face_normal;
+                }
+                if (overlap > best) {
+                    best = overlap;
+                    p.normal = normal;
+                    behind = cut;
+                }
+            }
+            p.overlap = best;
+            if (p.overlap > 0.0 && behind) cores_intersect = true;
+        }
+        if (!(p.overlap > 0.0)) continue;
+        p.point = x - (radius - 0.5 * p.overlap) * p.normal;
+        addPatchPoint(points, n, p);
+    }
+    return n;
+}
+
 template <class Law>
 RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
 {
@@ -269,23 +385,43 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     a.wall_power[item] = 0.0;
     const ConvexVertexSet core = cellCore(a.cells, c);
     const double radius = a.cells.dilation_radius[c];
-    const ContactGeometry g = wall.kind == wallPlate ? plateGeometry(core, radius, wall)
-                                                     : triSurfaceGeometry(a, core, radius, wall, item);
-    if (!(g.overlap > 0.0)) return clearItem(a.items, item);
-    a.items.last_normal[item] = g.normal;
-    const Vec3 wall_velocity = wall.velocity + cross(wall.angular_velocity, g.point - wall.origin);
-    ContactInput in;
-    in.overlap = g.overlap;
-    in.normal = g.normal;
-    in.relative_velocity = pointVelocity(a.cells, c, g.point) - wall_velocity;
+    PatchPoint points[max_patch_points];
+    bool cores_intersect = false;
+    int n = wallPatch(a, core, radius, wall, item, points, cores_intersect);
+    if (n == 0 && wall.kind == wallTriSurface) {
+        // No core vertex near the surface, but a triangle edge or corner may reach into
+        // a face or edge of the core: the single contact from GJK.
+        const ContactGeometry g = triSurfaceGeometry(a, core, radius, wall, item);
+        if (g.overlap > 0.0) {
+            points[0].point = g.point;
+            points[0].normal = g.normal;
+            points[0].overlap = g.overlap;
+            cores_intersect = g.cores_intersect;
+            n = 1;
+        }
+    }
+    if (n == 0) return clearItem(a.items, item);
+    for (int i = 0; i < n; ++i)
+        points[i].relative_velocity =
+            pointVelocity(a.cells, c, points[i].point) - wallPointVelocity(wall, points[i].point);
+    a.items.last_normal[item] = points[0].normal;
+    ContactPatchInput in;
+    in.points = points;
+    in.n_points = n;
+    in.centre = a.cells.position[c];
     in.effective_radius = radius;  // R* = r_d against a wall (R = infinity)
     in.effective_mass = a.cells.mass[c];
     in.dt = a.dt;
-    const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[item]);
-    storeItem(a.items, item, out, g.cores_intersect ? contactCoresIntersect : contactActive);
-    a.force_on_cell[item] = out.force_on_b;
-    a.torque_on_cell[item] = cross(g.point - a.cells.position[c], out.force_on_b);
-    a.wall_power[item] = dot(out.force_on_b, wall_velocity);
+    const ContactPatchOutput out = Law::evaluatePatch(a.constants, in, a.items.tangential_spring[item]);
+    a.items.elastic_energy[item] = out.elastic_energy;
+    a.items.damping_power[item] = out.damping_power;
+    a.items.friction_dissipation[item] = out.friction_dissipation;
+    a.items.status[item] = cores_intersect ? contactCoresIntersect : contactActive;
+    a.force_on_cell[item] = out.force;
+    a.torque_on_cell[item] = out.torque;
+    // Power of the force system on the wall's rigid velocity field, about the centroid.
+    a.wall_power[item] =
+        dot(out.force, wallPointVelocity(wall, in.centre)) + dot(wall.angular_velocity, out.torque);
 }
 
 template <class Law>

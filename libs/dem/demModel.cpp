@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -389,6 +390,169 @@ void DemModel::moveWalls(double dt)
         w.origin += dt * w.velocity;
         w.orientation = normalised(quatFromRotationVector(dt * w.angular_velocity) * w.orientation);
     }
+}
+
+// ---- Stable time step -----------------------------------------------------------
+
+namespace {
+
+// Linearised bond system: generalised displacement per cell (translation u, world;
+// rotation theta, world), bond stiffness K_b = (A/n)/l (k_n n n^T + k_t (1 - n n^T))
+// acting on the relative displacement of the anchor points.
+struct BondSystem {
+    const CellArrays& cells;
+    const InterfaceArrays& faces;
+    const BondArrays& bonds;
+    const BondMaterial& material;
+    std::vector<Mat3> rotation;
+
+    // (fu, ftheta) = K x (the gradient of the bond energy); x^T K_k x per interface in energy.
+    void apply(const std::vector<Vec3>& u, const std::vector<Vec3>& theta, std::vector<Vec3>& fu,
+               std::vector<Vec3>& ftheta, std::vector<double>* energy) const
+    {
+        const int n = cells.size();
+        fu.assign(n, Vec3{});
+        ftheta.assign(n, Vec3{});
+        if (energy) energy->assign(faces.size(), 0.0);
+        for (int k = 0; k < faces.size(); ++k) {
+            const int i = faces.cell_i[k], j = faces.cell_j[k];
+            const Vec3 normal = normalised(rotation[i] * faces.normal_i[k] - rotation[j] * faces.normal_j[k]);
+            const double scale = faces.bond_area[k] / (faces.length_i[k] + faces.length_j[k]);
+            for (int b = faces.bond_offset[k]; b < faces.bond_offset[k + 1]; ++b) {
+                if (bonds.stage[b] == bondBroken) continue;
+                const Vec3 ri = rotation[i] * bonds.anchor_i[b], rj = rotation[j] * bonds.anchor_j[b];
+                const Vec3 d = (u[j] + cross(theta[j], rj)) - (u[i] + cross(theta[i], ri));
+                const double dn = dot(d, normal);
+                const Vec3 f = scale * (material.normal_modulus * dn * normal +
+                                        material.shear_modulus * (d - dn * normal));  // K_b d
+                fu[j] += f;
+                ftheta[j] += cross(rj, f);
+                fu[i] -= f;
+                ftheta[i] -= cross(ri, f);
+                if (energy) (*energy)[k] += dot(d, f);
+            }
+        }
+    }
+};
+
+}  // namespace
+
+CriticalTimeStep DemModel::criticalTimeStep() const
+{
+    CriticalTimeStep result;
+    const int n = cells_.size();
+    BondSystem system{cells_, interfaces_, bonds_, bond_material_, {}};
+    system.rotation.resize(n);
+    for (int c = 0; c < n; ++c) system.rotation[c] = rotationMatrix(cells_.orientation[c]);
+    // World inverse inertia R I^-1 R^T applied to a vector.
+    auto inverseInertia = [&](int c, const Vec3& v) {
+        const Vec3 body = transposeTimes(system.rotation[c], v);
+        const Vec3 I = cells_.principal_inertia[c];
+        return system.rotation[c] * Vec3{body.x / I.x, body.y / I.y, body.z / I.z};
+    };
+    auto inertiaTimes = [&](int c, const Vec3& v) {
+        const Vec3 body = transposeTimes(system.rotation[c], v);
+        const Vec3 I = cells_.principal_inertia[c];
+        return system.rotation[c] * Vec3{body.x * I.x, body.y * I.y, body.z * I.z};
+    };
+
+    // Gershgorin bounds of the translation and rotation blocks, per cell (undamped).
+    std::vector<double> row_u(n, 0.0), row_theta(n, 0.0);
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const int i = interfaces_.cell_i[k], j = interfaces_.cell_j[k];
+        const double stiffness = bond_material_.normal_modulus * interfaces_.bond_area[k] /
+                                 (interfaces_.length_i[k] + interfaces_.length_j[k]);
+        const double mi = cells_.mass[i], mj = cells_.mass[j];
+        const Vec3 Ii = cells_.principal_inertia[i], Ij = cells_.principal_inertia[j];
+        const double ii = std::min({Ii.x, Ii.y, Ii.z}), ij = std::min({Ij.x, Ij.y, Ij.z});
+        for (int b = interfaces_.bond_offset[k]; b < interfaces_.bond_offset[k + 1]; ++b) {
+            if (bonds_.stage[b] == bondBroken) continue;
+            const double ri = norm(bonds_.anchor_i[b]), rj = norm(bonds_.anchor_j[b]);
+            row_u[i] += stiffness * (1.0 / mi + 1.0 / std::sqrt(mi * mj));
+            row_u[j] += stiffness * (1.0 / mj + 1.0 / std::sqrt(mi * mj));
+            row_theta[i] += stiffness * (ri * ri / ii + ri * rj / std::sqrt(ii * ij));
+            row_theta[j] += stiffness * (rj * rj / ij + ri * rj / std::sqrt(ii * ij));
+        }
+    }
+    const double largest_u = n > 0 ? *std::max_element(row_u.begin(), row_u.end()) : 0.0;
+    const double largest_theta = n > 0 ? *std::max_element(row_theta.begin(), row_theta.end()) : 0.0;
+    result.bond_translation_bound = largest_u > 0.0 ? 2.0 / std::sqrt(largest_u) : 1e300;
+    result.bond_rotation_bound = largest_theta > 0.0 ? 2.0 / std::sqrt(largest_theta) : 1e300;
+
+    // Power iteration on M^-1 K (M-normalised), deterministic start vector.
+    std::vector<Vec3> u(n), theta(n), fu, ftheta;
+    std::uint64_t state = 88172645463325252ULL;
+    auto random = [&]() {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return double(state >> 11) / double(1ULL << 53) - 0.5;
+    };
+    for (int c = 0; c < n; ++c) {
+        u[c] = {random(), random(), random()};
+        theta[c] = Vec3{random(), random(), random()} * (1.0 / std::max(cells_.bounding_radius[c], 1e-300));
+    }
+    auto massNorm2 = [&]() {
+        double sum = 0.0;
+        for (int c = 0; c < n; ++c)
+            sum += cells_.mass[c] * norm2(u[c]) + dot(theta[c], inertiaTimes(c, theta[c]));
+        return sum;
+    };
+    double lambda = 0.0;
+    std::vector<double> energy;
+    const int iterations = 400;
+    for (int it = 0; it < iterations && largest_u + largest_theta > 0.0; ++it) {
+        const double scale = 1.0 / std::sqrt(massNorm2());
+        for (int c = 0; c < n; ++c) {
+            u[c] *= scale;
+            theta[c] *= scale;
+        }
+        system.apply(u, theta, fu, ftheta, it + 1 == iterations ? &energy : nullptr);
+        // Rayleigh quotient x^T K x / x^T M x (x is M-normalised).
+        double quotient = 0.0;
+        for (int c = 0; c < n; ++c) quotient += dot(u[c], fu[c]) + dot(theta[c], ftheta[c]);
+        lambda = quotient;
+        for (int c = 0; c < n; ++c) {
+            u[c] = (1.0 / cells_.mass[c]) * fu[c];
+            theta[c] = inverseInertia(c, ftheta[c]);
+        }
+    }
+    if (lambda > 0.0) {
+        result.bond_frequency = std::sqrt(lambda);
+        // Damping ratio of that mode: C = sum_k beta_k K_k, zeta = omega/2 sum beta_k e_k / sum e_k.
+        double weighted = 0.0, total = 0.0;
+        for (int k = 0; k < interfaces_.size(); ++k) {
+            weighted += interfaces_.damping_beta[k] * energy[k];
+            total += energy[k];
+        }
+        const double beta = total > 0.0 ? weighted / total : 0.0;
+        const double zeta = 0.5 * beta * result.bond_frequency;
+        result.bond_damping_ratio = zeta;
+        result.bond = 2.0 * (std::sqrt(1.0 + zeta * zeta) - zeta) / result.bond_frequency;
+    } else {
+        result.bond = 1e300;
+    }
+
+    // Contacts: a rock–steel Hertz contact at an overlap of 0.1 r_d on the lightest cell,
+    // acting at its bounding radius (translation and rotation), with its restitution damping.
+    double contact_omega2 = 0.0;
+    for (int c = 0; c < n; ++c) {
+        const double r = cells_.dilation_radius[c];
+        const double stiffness = 2.0 * std::max(rock_steel_.effective_modulus, rock_rock_.effective_modulus) *
+                                 std::sqrt(r * 0.1 * r);
+        const Vec3 I = cells_.principal_inertia[c];
+        const double arm = cells_.bounding_radius[c];
+        contact_omega2 = std::max(contact_omega2,
+                                  stiffness * (2.0 / cells_.mass[c] + arm * arm / std::min({I.x, I.y, I.z})));
+    }
+    const double contact_zeta =
+        std::sqrt(5.0 / 6.0) * std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
+    result.contact =
+        contact_omega2 > 0.0
+            ? 2.0 * (std::sqrt(1.0 + contact_zeta * contact_zeta) - contact_zeta) / std::sqrt(contact_omega2)
+            : 1e300;
+    result.value = std::min(result.bond, result.contact);
+    return result;
 }
 
 // ---- Neighbour lists ---------------------------------------------------------

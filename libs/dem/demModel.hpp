@@ -55,6 +55,17 @@ struct DemCounters {
     int shrunk_cores = 0;        // cells whose erosion failed (shrink fallback)
 };
 
+// The explicit stability limit of the current model (docs/theory-dem.md §2).
+struct CriticalTimeStep {
+    double value = 0.0;                   // the smaller of bond and contact [s]
+    double bond = 0.0;                    // 2 (sqrt(1 + zeta^2) - zeta) / omega of the bonds [s]
+    double bond_frequency = 0.0;          // omega: highest frequency of the linearised bonds [rad/s]
+    double bond_damping_ratio = 0.0;      // zeta of that mode (stiffness-proportional dashpots)
+    double bond_translation_bound = 0.0;  // Gershgorin, translation blocks only [s] (undamped)
+    double bond_rotation_bound = 0.0;     // Gershgorin, rotation blocks only [s] (undamped)
+    double contact = 0.0;                 // Hertz estimate at an overlap of 0.1 r_d [s]
+};
+
 // Rigid motion of a triangulated wall: x_world = translation + R(orientation) x_wall,
 // velocity field v(x) = velocity + angular_velocity x (x - translation).
 struct WallMotion {
@@ -86,6 +97,9 @@ public:
     // ---- Time stepping -----------------------------------------------------
     // pi R sqrt(rho/G) / (0.1631 nu + 0.8766), R the smallest volume-equivalent radius.
     double rayleighTimeStep() const { return rayleigh_time_step_; }
+    // The largest stable step of the intact bonds (highest mode of the linearised
+    // bond system by power iteration, with its damping ratio) and of the contacts.
+    CriticalTimeStep criticalTimeStep() const;
     // One explicit step; returns the new time. Check status() afterwards.
     double step(double dt);
     // Forces at the current state without moving anything (histories advance as in a

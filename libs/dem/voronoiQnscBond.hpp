@@ -112,7 +112,14 @@ struct VoronoiQnscLaw {
                 0.5 * in.bond_area * inverse_l *
                 (m.normal_modulus * tensile_opening * tensile_opening + m.shear_modulus * shear_opening2);
             out.fracture_dissipation = damageable_energy * (h.damage - damage_before);
-            if (h.stage == bondBroken) return out;  // D = 1: force and stiffness removed
+            if (h.stage == bondBroken) {  // D = 1: force and stiffness removed
+                // A bond broken in shear under compression loses its (undamaged)
+                // compressive energy with it: released, booked with the fracture.
+                if (normal_opening < 0.0)
+                    out.fracture_dissipation += 0.5 * in.bond_area * inverse_l * m.normal_modulus *
+                                                normal_opening * normal_opening;
+                return out;
+            }
         }
         // Degraded stresses (Eqs. 16–17): no damage in compression.
         const double intact = 1.0 - h.damage;

@@ -29,6 +29,7 @@ struct BondedDemRun::Impl {
     int lowerPlate = -1, upperPlate = -1;
     long sampleInterval = 10;  // steps between plateForce rows
     double rayleighStep = 0.0;
+    CriticalTimeStep critical;
 
     // Run state (restart).
     long step = 0;
@@ -70,12 +71,30 @@ struct BondedDemRun::Impl {
     void chooseTimeStep()
     {
         rayleighStep = model->rayleighTimeStep();
-        if (!time.deltaTGiven()) {
-            if (!controlDict.found("rayleighFraction"))
-                throw UserError(controlDict.fileName() +
-                                ": give 'deltaT' [s] or 'rayleighFraction' (the step as a fraction of the "
-                                "Rayleigh step, e.g. 0.02)");
+        critical = model->criticalTimeStep();
+        const int given = int(time.deltaTGiven()) + int(controlDict.found("rayleighFraction")) +
+                          int(controlDict.found("criticalFraction"));
+        if (given != 1)
+            throw UserError(
+                controlDict.fileName() +
+                ": give exactly one of 'deltaT' [s], 'rayleighFraction' (the step as a fraction of "
+                "the Rayleigh step, e.g. 0.02) or 'criticalFraction' (the step as a fraction of the "
+                "largest stable step of the bonds and contacts, e.g. 0.8)");
+        if (controlDict.found("rayleighFraction"))
             time.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
+        if (controlDict.found("criticalFraction"))
+            time.setDeltaT(controlDict.getScalar("criticalFraction", Bounds::closed(1e-9, 1)) *
+                           critical.value);
+        if (time.deltaT() > critical.value) {
+            char buffer[400];
+            std::snprintf(
+                buffer, sizeof(buffer),
+                ": the time step %.4g s is above the largest stable step %.4g s of this mesh and these "
+                "parameters (bonds: highest frequency %.4g rad/s, damping ratio %.3g; contacts %.4g s); "
+                "set deltaT <= %.4g or use criticalFraction (e.g. 0.8)",
+                time.deltaT(), critical.value, critical.bond_frequency, critical.bond_damping_ratio,
+                critical.contact, critical.value);
+            throw UserError(controlDict.fileName() + buffer);
         }
     }
 
@@ -84,9 +103,11 @@ struct BondedDemRun::Impl {
         if (!controlDict.found("functions")) return;
         const Dictionary& functions = controlDict.subDict("functions");
         if (functions.found("plateForce"))
-            sampleInterval = functions.subDict("plateForce").getOrDefault<long>("writeInterval", sampleInterval);
+            sampleInterval =
+                functions.subDict("plateForce").getOrDefault<long>("writeInterval", sampleInterval);
         if (sampleInterval < 1)
-            throw UserError(controlDict.fileName() + ": functions/plateForce/writeInterval must be >= 1 step");
+            throw UserError(controlDict.fileName() +
+                            ": functions/plateForce/writeInterval must be >= 1 step");
     }
 
     void restoreState()
@@ -134,9 +155,9 @@ struct BondedDemRun::Impl {
 
     static std::vector<Column> columns()
     {
-        return {{"Time", "s"},          {"gapChange", "m"},     {"force", "N"},  {"forceLower", "N"},
-                {"brokenBonds", "-"},   {"kinetic", "J"},       {"strain", "J"}, {"dissipated", "J"},
-                {"fracture", "J"},      {"externalWork", "J"},  {"balanceError", "J"}};
+        return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},       {"forceLower", "N"},
+                {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},      {"dissipated", "J"},
+                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"}};
     }
 
     void writeTime()
@@ -182,17 +203,27 @@ void BondedDemRun::printSetup() const
     for (int c = 0; c < cells.size(); ++c) mass += cells.mass[c];
     std::printf("Mesh: %d cells, %d bonds, dilation radius %.4g mm, mass %.5g kg\n", r.mesh.nCells(),
                 r.mesh.nBonds(), 1e3 * r.mesh.dilationRadius, mass);
-    std::printf("Bonds: %s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m, damping %s %.3g\n",
-                r.parameters.bond_law.c_str(), 1e-9 * r.parameters.bond_youngs_modulus,
-                1e-6 * r.parameters.bond_tensile_strength, 1e-6 * r.parameters.bond_cohesion,
-                r.parameters.bond_friction, r.parameters.fracture_energy_mode_I,
-                dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
-    std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n", r.time.deltaT(),
-                r.time.deltaT() / r.rayleighStep, r.rayleighStep, r.time.endTime(), r.time.endStep());
-    std::printf("Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, settling %.4g s; memory %.3g MB\n",
-                r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
-                r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
-                r.loading.settlingTime, 1e-6 * static_cast<double>(r.model->memoryBytes()));
+    std::printf(
+        "Bonds: %s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m, damping %s "
+        "%.3g\n",
+        r.parameters.bond_law.c_str(), 1e-9 * r.parameters.bond_youngs_modulus,
+        1e-6 * r.parameters.bond_tensile_strength, 1e-6 * r.parameters.bond_cohesion,
+        r.parameters.bond_friction, r.parameters.fracture_energy_mode_I,
+        dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
+    std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n",
+                r.time.deltaT(), r.time.deltaT() / r.rayleighStep, r.rayleighStep, r.time.endTime(),
+                r.time.endStep());
+    std::printf(
+        "Stable step %.4g s (bonds %.4g s: highest frequency %.4g rad/s, damping ratio %.3g, Gershgorin "
+        "translation %.4g s, rotation %.4g s; contacts %.4g s); the step is %.3g of it\n",
+        r.critical.value, r.critical.bond, r.critical.bond_frequency, r.critical.bond_damping_ratio,
+        r.critical.bond_translation_bound, r.critical.bond_rotation_bound, r.critical.contact,
+        r.time.deltaT() / r.critical.value);
+    std::printf(
+        "Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, settling %.4g s; memory %.3g MB\n",
+        r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
+        r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
+        r.loading.settlingTime, 1e-6 * static_cast<double>(r.model->memoryBytes()));
     if (r.restarted) std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.step);
 }
 
@@ -238,7 +269,8 @@ int BondedDemRun::execute()
             reason = "interrupted by a signal: state written, continue with startFrom latestTime";
             exitCode = interruptExitCode();
         }
-        if (stop) reason = "stop criterion met (force below the set fraction of its peak, or maximum approach)";
+        if (stop)
+            reason = "stop criterion met (force below the set fraction of its peak, or maximum approach)";
         if (r.time.writeDue(r.step) || stop || exitCode != exitSuccess || r.step == endStep) {
             if (r.step % r.sampleInterval != 0) plateForce.append(r.sampleRow());
             r.writeTime();
@@ -250,11 +282,12 @@ int BondedDemRun::execute()
     std::printf("Peak force %.6g N at the upper plate; %d of %d bonds broken; %ld neighbour-list rebuilds\n",
                 r.peakForce, r.model->counters().bonds_broken, r.model->counters().bonds,
                 r.model->counters().neighbour_rebuilds);
-    std::printf("Energy: external work %.4g J, kinetic %.4g J, stored %.4g J, dissipated %.4g J "
-                "(fracture %.4g J), balance error %.3g J\n",
-                r.model->energies().externalWork(), r.model->energies().kinetic(), r.model->energies().stored(),
-                r.model->energies().dissipated(), r.model->energies().fracture,
-                r.model->energies().balance() - r.model->initialBalance());
+    std::printf(
+        "Energy: external work %.4g J, kinetic %.4g J, stored %.4g J, dissipated %.4g J "
+        "(fracture %.4g J), balance error %.3g J\n",
+        r.model->energies().externalWork(), r.model->energies().kinetic(), r.model->energies().stored(),
+        r.model->energies().dissipated(), r.model->energies().fracture,
+        r.model->energies().balance() - r.model->initialBalance());
     return exitCode;
 }
 

@@ -6,6 +6,7 @@
 #include "boxMeshes.hpp"
 #include "core/error.hpp"
 #include "dem/demModel.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -245,4 +246,37 @@ TEST_CASE("unknown law names are user errors listing the known ones", "[dem][reg
     p.contact_law = "linearSpring";
     CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("hertzMindlin"));
     CHECK_THROWS_AS(dampingReadingFromName("seconds"), UserError);
+}
+
+TEST_CASE("a bond broken in shear under compression books its compressive energy as fracture",
+          "[dem][bond][energy]")
+{
+    BondMaterial m;
+    m.normal_modulus = 55e9;
+    m.shear_modulus = 18e9;
+    m.tensile_strength = 28e6;
+    m.cohesion = 42e6;
+    m.friction = 0.8;
+    m.fracture_energy_I = m.fracture_energy_II = 1e-3;  // brittle: breaks right at onset
+    m.rupture_tolerance = 1e-6;
+    BondInput in;
+    in.normal = {1.0, 0.0, 0.0};
+    in.reference_length = reference_length;
+    in.bond_area = bond_area;
+    const double dn = -1e-6;  // compression: sigma = -11 MPa
+    BondHistory h;
+    double fracture = 0.0, strain_before = 0.0;
+    for (int i = 1; i <= 4000 && h.stage != bondBroken; ++i) {
+        in.opening = {dn, 1e-8 * i, 0.0};
+        const BondOutput out = VoronoiQnscLaw::evaluate(m, in, h);
+        fracture += out.fracture_dissipation;
+        if (h.stage != bondBroken) strain_before = out.strain_energy;
+    }
+    REQUIRE(h.stage == bondBroken);
+    // Everything the bond stored (shear and compression) is released into fracture.
+    const double compressive = 0.5 * bond_area * m.normal_modulus * dn * dn / reference_length;
+    INFO("fracture " << fracture << " stored before " << strain_before << " compressive part "
+                     << compressive);
+    CHECK(fracture > compressive);
+    CHECK(fracture == Approx(strain_before).epsilon(0.02));
 }

@@ -288,3 +288,78 @@ TEST_CASE("GJK distance against brute force for random polytope pairs", "[dem][g
     CHECK(separated > 30);
     CHECK(intersecting > 10);
 }
+
+namespace {
+
+// A single (unbonded, untilted) box cell between two fixed plates, its bottom and top
+// faces parallel to them, each of the eight core corners overlapping by `overlap`.
+DemModel boxBetweenPlates(const DemParameters& p, double overlap)
+{
+    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    const double half = 0.5 * cell_size;  // core half size + r_d
+    const Vec3 centre = model.cells().position[0];
+    model.addPlate(centre - Vec3{0.0, 0.0, half - overlap}, {0.0, 0.0, 1.0});
+    model.addPlate(centre + Vec3{0.0, 0.0, half - overlap}, {0.0, 0.0, -1.0});
+    return model;
+}
+
+}  // namespace
+
+TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz contact",
+          "[dem][contact][wall]")
+{
+    const DemParameters p = quietParameters();
+    const double overlap = 2e-6;
+    DemModel model = boxBetweenPlates(p, overlap);
+    model.evaluateForces(0.0);
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
+                                           p.steel_youngs_modulus, p.steel_poisson_ratio);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
+    // Four corners per face: the lower plate pushes up with 4 Hertz forces, no torque.
+    CHECK(model.wallReaction(0).z == Approx(-4.0 * hertz).epsilon(1e-9));
+    CHECK(model.wallReaction(1).z == Approx(4.0 * hertz).epsilon(1e-9));
+    CHECK(norm(model.cells().torque[0]) < 1e-9 * hertz * cell_size);
+
+    // Rocked by a tiny angle, the force and torque change continuously (no jump to a
+    // single corner): the torque is the sum of the corner forces' moments.
+    const Quat q = model.cells().orientation[0];
+    const Vec3 x = model.cells().position[0];
+    double previous_torque = 0.0;
+    for (double angle : {1e-9, 1e-8, 1e-7}) {
+        model.setCellPose(0, x, quatFromRotationVector({angle, 0.0, 0.0}) * q);
+        model.evaluateForces(0.0);
+        const double torque = model.cells().torque[0].x;
+        INFO("angle " << angle << " torque " << torque);
+        CHECK(model.wallReaction(0).z == Approx(-4.0 * hertz).epsilon(1e-3));
+        // Restoring and linear in the angle for small angles: |T| / angle is bounded.
+        CHECK(torque < 0.0);
+        CHECK(std::fabs(torque) / angle < 1e3 * hertz * cell_size / overlap);
+        CHECK(std::fabs(torque) > previous_torque);
+        previous_torque = std::fabs(torque);
+    }
+}
+
+TEST_CASE("a cell rocking between two plates with e = 1, no friction, conserves energy",
+          "[dem][contact][wall][energy]")
+{
+    DemParameters p = quietParameters();
+    p.rock_steel_restitution = 1.0;  // no contact damping
+    p.rock_steel_friction = 0.0;
+    DemModel model = boxBetweenPlates(p, 5e-6);
+    // Rock about x and y, bounce along z, slide sideways a little.
+    model.setCellVelocity(0, {0.01, 0.0, 0.02}, {20.0, -12.0, 3.0});
+    model.evaluateForces(0.0);
+    const double initial = model.energies().balance();
+    const double dt = 1e-7;  // ~ 1/60 of the contact period
+    double largest_deviation = 0.0, largest_torque = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+        model.step(dt);
+        REQUIRE(model.status().ok());
+        largest_deviation = std::max(largest_deviation, std::fabs(model.energies().balance() - initial));
+        largest_torque = std::max(largest_torque, norm(model.cells().torque[0]));
+    }
+    INFO("initial energy " << initial << " largest deviation " << largest_deviation << " torque "
+                           << largest_torque);
+    CHECK(largest_torque > 0.0);  // it did rock
+    CHECK(largest_deviation < 1e-3 * initial);
+}
