@@ -997,9 +997,18 @@ void DemModel::updateStatus(int non_finite_cell)
                                                 std::fabs(e.wall_work) + std::fabs(e.gravity_work));
     status_.energy_scale = energy_scale_;
     status_.energy_error = e.balance() - initial_balance_;
+    // Below the fracture energy of one average bond the balance is round-off
+    // (a plate that has just touched a vertex): the growth check starts above it.
+    if (energy_floor_ == 0.0) {
+        double area = 0.0;
+        for (int k = 0; k < interfaces_.size(); ++k)
+            area += interfaces_.bond_area[k] * (interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k]);
+        const int n_bonds = std::max(1, bonds_.size());
+        energy_floor_ = std::max(1e-300, parameters_.fracture_energy_mode_I * area / n_bonds);
+    }
     if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
         status_.code = DemStatusCode::nonFiniteState;
-    else if (status_.energy_error > parameters_.energy_growth_tolerance * energy_scale_ &&
+    else if (status_.energy_error > parameters_.energy_growth_tolerance * std::max(energy_scale_, energy_floor_) &&
              status_.energy_error > 0.0)
         status_.code = DemStatusCode::energyGrowth;
 }

@@ -221,6 +221,7 @@ private:
     DemEnergies energies_;
     double initial_balance_ = 0.0;
     double energy_scale_ = 0.0;
+    double energy_floor_ = 0.0;  // fracture energy of one average bond: the check's noise floor
     DemCounters counters_;
     DemStatus status_;
 };

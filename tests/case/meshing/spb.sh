@@ -6,7 +6,7 @@ declare -A expected=(
   [limestone]="353 280 381 408 243 349 298")
 for rock in granite limestone; do
     copyTutorial "tutorials/SPB/$rock" "$work/$rock"
-    "$work/$rock/Allrun" > "$work/$rock.log"
+    "$work/$rock/Allrun" -meshOnly > "$work/$rock.log"
     i=1
     for n in ${expected[$rock]}; do
         log="$work/$rock/rock$i/log.voronoiMesh"
