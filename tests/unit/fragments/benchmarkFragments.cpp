@@ -3,12 +3,15 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <random>
 
 #include "../dem/boxMeshes.hpp"
 #include "dem/bondLaw.hpp"
 #include "fragments/fragmentCase.hpp"
+#include "io/stateFile.hpp"
 #include "voronoi/tessellation.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
 
 using namespace rockfrac;
 
@@ -21,7 +24,24 @@ double secondsSince(std::chrono::steady_clock::time_point t)
 
 // Break whole interfaces with probability p, tumble every cell a little, and time
 // the analysis (labels, poses, sizes) and the PSD.
-void timeAnalysis(const char* name, const VoronoiMesh& mesh, double p)
+// A case fragmentPSD can read (mesh, rockProperties, 1/demState), to time the application.
+void writeCase(const std::filesystem::path& dir, const VoronoiMesh& mesh, const CellPoses& poses,
+               const std::vector<std::uint8_t>& stage)
+{
+    writeVoronoiMesh(dir, mesh);
+    std::filesystem::create_directories(dir / "1");
+    std::ofstream(dir / "constant/rockProperties") << "rock { density 2540; }\n";
+    StateFile s;
+    s.put("cell.position", poses.position);
+    std::vector<double> q;
+    for (const Quat& o : poses.orientation) q.insert(q.end(), {o.w, o.x, o.y, o.z});
+    s.put("cell.orientation", q);
+    s.put("bond.stage", stage);
+    s.putScalar("time", 1.0);
+    s.write(dir / "1/demState");
+}
+
+void timeAnalysis(const char* name, const VoronoiMesh& mesh, double p, const char* caseDir = nullptr)
 {
     const double density = 2540;
     auto t0 = std::chrono::steady_clock::now();
@@ -54,6 +74,7 @@ void timeAnalysis(const char* name, const VoronoiMesh& mesh, double p)
         name, mesh.nCells(), mesh.vertices.size(), mesh.nBonds(), a.labels.n_fragments,
         1e3 * r.sieve_size.p80, setup, analysis, psd);
     CHECK(a.labels.n_fragments > 1);
+    if (caseDir) writeCase(caseDir, mesh, poses, stage);
 }
 
 }  // namespace
@@ -67,5 +88,7 @@ TEST_CASE("fragment analysis of 10^5 cells", "[.benchmark][fragments]")
     const VoronoiMesh voronoi =
         generateVoronoiMesh(Domain::box({0, 0, 0}, {0.1, 0.1, 0.1}), 100000, 0.0, 5, 0.1);
     std::printf("(Voronoi mesh of 10^5 cells generated in %.1f s)\n", secondsSince(t0));
-    timeAnalysis("Voronoi", voronoi, 0.8);
+    timeAnalysis("Voronoi", voronoi, 0.8, ROCKFRAC_BINARY_DIR "/fragmentBenchmarkCase");
+    std::printf("(case written to %s: time `fragmentPSD -case` on it)\n",
+                ROCKFRAC_BINARY_DIR "/fragmentBenchmarkCase");
 }
