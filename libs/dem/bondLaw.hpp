@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/vec3.hpp"
 #include "dem/quat.hpp"
 
@@ -177,7 +178,7 @@ template <class Law>
 void runBondKernel(const BondKernelArgs& a)
 {
     const int n_blocks = (a.n_interfaces + a.block_size - 1) / a.block_size;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         BondBlockSums sums;
         const int end =

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/vec3.hpp"
 #include "dem/gjk.hpp"
 
@@ -427,14 +428,14 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
 template <class Law>
 void runPairKernel(const PairKernelArgs& a)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (a.n_pairs >= parallelMinimumItems())
     for (int p = 0; p < a.n_pairs; ++p) pairKernel<Law>(a, p);
 }
 
 template <class Law>
 void runWallKernel(const WallKernelArgs& a)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (a.n_items >= parallelMinimumItems())
     for (int item = 0; item < a.n_items; ++item) wallKernel<Law>(a, item);
 }
 

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "core/parallel.hpp"
 #include "core/error.hpp"
 #include "dem/cellCore.hpp"
 
@@ -682,7 +683,7 @@ void DemModel::buildWallItems()
 void DemModel::refreshKinematicCaches()
 {
     const int n = cells_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
     for (int c = 0; c < n; ++c) {
         rotation_[c] = rotationMatrix(cells_.orientation[c]);
         angular_velocity_world_[c] = rotation_[c] * cells_.angular_velocity[c];
@@ -846,7 +847,7 @@ void DemModel::gatherForces()
 {
     const int n = cells_.size();
     const Vec3 gravity = parameters_.gravity;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
     for (int c = 0; c < n; ++c) {
         Vec3 force = cells_.mass[c] * gravity, torque;
         for (int e = cell_interface_offset_[c]; e < cell_interface_offset_[c + 1]; ++e) {
@@ -908,7 +909,7 @@ void DemModel::kickDrift(double dt)
     const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
     cell_block_sums_.assign(n_blocks, CellBlockSums{});
     const Vec3 gravity = parameters_.gravity;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         double gravity_work = 0.0;
         for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
@@ -935,7 +936,7 @@ void DemModel::kickDrift(double dt)
 void DemModel::kick(double dt)
 {
     const int n = cells_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
     for (int c = 0; c < n; ++c) {
         cells_.velocity[c] += (0.5 * dt / cells_.mass[c]) * cells_.force[c];
         const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
@@ -951,7 +952,7 @@ void DemModel::measureCells(double sync_dt)
     const int n = cells_.size();
     const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
     cell_block_sums_.assign(n_blocks, CellBlockSums{});
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         CellBlockSums s;
         for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
