@@ -155,6 +155,17 @@ std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, d
             for (int j = 0; j < 3; ++j) forces[3 * f[k] + j] += force[j] / 3.0;
         if (radial.z > 0) topForce += -force.z;
     }
+    // The facets of the two arcs differ slightly (an unstructured mesh): remove the net
+    // force, spread evenly over the loaded nodes, so the load is self-equilibrated and
+    // does not drive a slow rigid drift of the free disc.
+    Vec3 net;
+    std::vector<int> loaded;
+    for (std::size_t i = 0; i < mesh.numNodes(); ++i) {
+        const Vec3 f{forces[3 * i], forces[3 * i + 1], forces[3 * i + 2]};
+        if (norm(f) > 0) loaded.push_back(static_cast<int>(i)), net += f;
+    }
+    for (int i : loaded)
+        for (int j = 0; j < 3; ++j) forces[3 * i + j] -= net[j] / static_cast<double>(loaded.size());
     return forces;
 }
 

@@ -136,7 +136,7 @@ struct FeFractureRun::Impl {
         if (!(arcTopForcePerPascal > 0))
             throw UserError(loadingDict.fileName() +
                             ": arcLoad: no boundary face lies on the arcs; widen halfAngle");
-        const double inset = 1e-9 * height;
+        const double inset = 0.02 * height;  // inside the faceted surface
         topPole = locateMaterialPoint(mesh, {c.x, c.y, bounds.hi.z - inset});
         bottomPole = locateMaterialPoint(mesh, {c.x, c.y, bounds.lo.z + inset});
     }
