@@ -338,6 +338,9 @@ struct FeFractureRun::Impl {
         if (!loadingStarted(model->time())) return;
         const double f = plateForce();
         run.peakForce = std::max(run.peakForce, f);
+        // The detectors start once the force has reached stop/minPeakForce, so the force
+        // oscillation of the first contact is not taken for a failure.
+        if (run.peakForce < loading.minPeakForce) return;
         for (std::size_t k = 0; k < detectors.size(); ++k) {
             if (detectors[k].failed()) continue;
             if (f > run.detectorMaximum[k]) {
@@ -590,8 +593,8 @@ int FeFractureRun::execute()
     }
     progress.finish(r.run.step, r.model->time(), reason);
     const EnergyBalance& e = r.model->energy();
-    std::printf("Peak force %.6g N at t = %.6g s; %ld of %zu elements cracked (D1 = 1)\n", r.run.peakForce,
-                r.run.peakTime, r.crackedElements(), r.mesh.numTets());
+    std::printf("Peak force %.6g N; %ld of %zu elements cracked (D1 = 1)\n", r.run.peakForce,
+                r.crackedElements(), r.mesh.numTets());
     std::printf(
         "Energy: external work %.4g J, internal work %.4g J, damping %.4g J, kinetic %.4g J, strain %.4g J\n",
         e.externalWork, e.internalWork, e.dampingWork, r.model->kineticEnergy(), r.model->strainEnergy());

@@ -37,11 +37,11 @@ share=$(sed -n 's/.* \([0-9.]*\) % of it within .*/\1/p' "$log")
 awk -v s="$share" 'BEGIN { exit !(s > 60) }' || fail "only $share % of the cracked volume near the loaded mid-plane"
 echo "ok: $share % of the cracked volume within D/8 of the loaded mid-plane"
 
-# Restart: stop at the first write time after 40 % of the run, then continue.
+# Restart: stop at the first write time of the uninterrupted run after 40 % of it (the step
+# is computed, so write times are not round numbers), then continue.
 stopTime=$(awk -F'\t' '!/^#/ { t = $1 } END { print t }' "$work/threads1/$dat")
+half=$(cd "$work/threads2" && ls -d [0-9]* | sort -g | awk -v t="$stopTime" '$1 >= 0.4 * t { print; exit }')
 cp -r "$work/base" "$work/restart" && cd "$work/restart"
-interval=$(caseDict -case . system/controlDict -entry writeInterval -value)
-half=$(awk -v t="$stopTime" -v w="$interval" 'BEGIN { n = int(0.4 * t / w); if (n < 1) n = 1; printf "%.10g", n * w }')
 endTime=$(caseDict -case . system/controlDict -entry endTime -value)
 caseDict -case . system/controlDict -entry endTime -set "$half" > /dev/null
 OMP_NUM_THREADS=2 run feFractureSolver
