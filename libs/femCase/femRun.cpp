@@ -541,7 +541,9 @@ int FeFractureRun::execute()
         return exitSuccess;
     }
     installInterruptHandlers();
-    const double restartTime = r.restarted ? r.model->time() : -1.0;
+    // The .dat files print 10 digits, so the row of the restart time may read back a little
+    // above it; the next row is a whole step later (dt / t >> 1e-9).
+    const double restartTime = r.restarted ? r.model->time() * (1 + 1e-9) : -1.0;
     TimeSeriesWriter plateForce(r.app.casePath(), "plateForce", Impl::plateForceColumns(), restartTime);
     TimeSeriesWriter extensometer(r.app.casePath(), "extensometer", Impl::extensometerColumns(), restartTime);
     std::unique_ptr<TimeSeriesWriter> centreStress;
