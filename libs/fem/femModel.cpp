@@ -145,6 +145,13 @@ void FemModel::constrainNodes(const std::vector<int>& nodes, const std::array<bo
     forcesCurrent_ = false;
 }
 
+void FemModel::setAppliedForces(const std::vector<double>& forces)
+{
+    if (!forces.empty() && forces.size() != state_.displacements.size())
+        throw UserError("setAppliedForces: wrong size");
+    appliedForces_ = forces;  // no re-evaluation: the forces at the current time stay as they are
+}
+
 void FemModel::setVelocities(const std::vector<double>& velocities)
 {
     if (velocities.size() != state_.velocities.size()) throw UserError("setVelocities: wrong size");
@@ -228,6 +235,7 @@ void FemModel::applyConstraintsAndGravity()
         for (int c = 0; c < 3; ++c) {
             double& external = state_.externalForces[3 * i + c];
             external += physicalNodalMass_[i] * g[c];
+            if (!appliedForces_.empty()) external += appliedForces_[3 * i + c];
             if (constrained_[i] & (1u << c)) external = state_.internalForces[3 * i + c];
             state_.netForces[3 * i + c] = external - state_.internalForces[3 * i + c];
         }

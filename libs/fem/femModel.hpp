@@ -96,6 +96,11 @@ public:
     // Prescribes velocity components (x, y, z selected by `components`) of nodes.
     void constrainNodes(const std::vector<int>& nodes, const std::array<bool, 3>& components,
                         const Vec3& velocity = {});
+    // Applied nodal forces (3 per node, N), e.g. a distributed pressure lumped to the
+    // nodes: part of f_ext (and W_ext) from the next force evaluation on. The caller
+    // sets the load of time t + dt before step(dt) for a time-dependent load (the forces
+    // of the current time are not re-evaluated); not part of the state.
+    void setAppliedForces(const std::vector<double>& forces);
     void setVelocities(const std::vector<double>& velocities);
     void setDisplacements(const std::vector<double>& displacements);
 
@@ -160,6 +165,7 @@ private:
     std::vector<double> contactStiffness_;    // normal penalty per contact node
     std::vector<unsigned char> constrained_;  // bit k: component k prescribed
     std::vector<double> prescribedVelocity_;  // 3 per node
+    std::vector<double> appliedForces_;       // 3 per node, empty = none
     bool forcesCurrent_ = false;
     FemState state_;
 };

@@ -1,0 +1,609 @@
+#include "femCase/femRun.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/dictionary.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "core/timeControl.hpp"
+#include "fem/measurements.hpp"
+#include "femCase/femCase.hpp"
+#include "io/timeSeries.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+using namespace fem;
+
+namespace {
+
+// Quasi-static criterion of physics.md §2: kinetic energy below 1 % of the external work.
+constexpr double quasiStaticLimit = 0.01;
+// Drop fractions of the failure-load detectors: the case's X and the sensitivity pair.
+constexpr double sensitivityLow = 0.1, sensitivityHigh = 0.3;
+
+struct Bounds3 {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    Vec3 centre() const { return 0.5 * (lo + hi); }
+};
+
+Bounds3 meshBounds(const TetMesh& mesh)
+{
+    Bounds3 b;
+    for (const Vec3& p : mesh.nodes)
+        for (int k = 0; k < 3; ++k) b.lo[k] = std::min(b.lo[k], p[k]), b.hi[k] = std::max(b.hi[k], p[k]);
+    return b;
+}
+
+}  // namespace
+
+struct FeFractureRun::Impl {
+    const Application& app;
+    Dictionary controlDict;
+    TimeControl time;
+    FemParameters parameters;
+    FemLoading loading;
+    TetMesh mesh;
+    Bounds3 bounds;
+    std::unique_ptr<FemModel> model;
+    std::unique_ptr<VirtualExtensometer> extensometer;
+    int lowerPlate = -1, upperPlate = -1;
+    std::vector<double> arcUnitForces;  // per Pa
+    double arcTopForcePerPascal = 0.0;
+    MaterialPoint topPole, bottomPole;  // arc load: the approach of the two poles
+    long sampleInterval = 10;
+    // centreStress function: elements whose centroid lies within `radius` of the line
+    // through the specimen centre along y (the disc axis); empty = off.
+    std::vector<int> probeElements;
+    double probeRadius = 0.0;
+    double stableStep = 0.0;
+    FemRunState run;
+    std::vector<FailureLoadDetector> detectors;
+    bool restarted = false;
+    bool quasiStaticWarned = false;
+
+    explicit Impl(const Application& a)
+        : app(a),
+          controlDict(Dictionary::readFile(a.path("system/controlDict"))),
+          time(controlDict, a.casePath())
+    {
+        parameters = readFemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
+        const Dictionary loadingDict = Dictionary::readFile(a.path("constant/loading"));
+        loading = readFemLoading(loadingDict);
+        readSolverControls();
+        const fs::path msh = a.path("constant/feMesh/specimen.msh");
+        if (!fs::exists(msh))
+            throw UserError("missing " + msh.string() +
+                            "; run meshRock with a system/feMeshDict first to make the tetrahedral mesh");
+        mesh = readGmshMesh(msh.string());  // rejects inverted or degenerate elements
+        bounds = meshBounds(mesh);
+        model = std::make_unique<FemModel>(mesh, parameters);
+        placeLoads(loadingDict);
+        chooseTimeStep();
+        checkPlateReachesSpecimen(loadingDict);
+        readFunctions();
+        initialiseDetectors();
+        if (time.restarting()) restoreState();
+    }
+
+    void readSolverControls()
+    {
+        static const Dimensions seconds = Dimensions::fromUnits("s");
+        static const Dimensions perSecond = Dimensions::fromUnits("1/s");
+        parameters.timeStepSafety = controlDict.getScalarOrDefault(
+            "timeStepSafety", parameters.timeStepSafety, Bounds::closed(1e-6, 1));
+        parameters.massScalingTimeStep =
+            controlDict.getScalarOrDefault("massScalingTimeStep", 0.0, Bounds::nonNegative(), &seconds);
+        parameters.massDamping =
+            controlDict.getScalarOrDefault("massDamping", 0.0, Bounds::nonNegative(), &perSecond);
+        parameters.gravity = loading.gravity;
+        parameters.contactPenaltyScale = loading.contactPenaltyScale;
+        parameters.tangentialPenaltyRatio = loading.tangentialPenaltyRatio;
+    }
+
+    void placeLoads(const Dictionary& loadingDict)
+    {
+        const Vec3 centre = loading.extensometerCentre.value_or(bounds.centre());
+        try {
+            extensometer = std::make_unique<VirtualExtensometer>(mesh, centre, Vec3{0, 0, 1},
+                                                                 loading.extensometerLength);
+        } catch (const UserError& e) {
+            throw UserError(loadingDict.fileName() + ": extensometer: " + e.what() +
+                            "; shorten extensometer/length or move extensometer/centre into the specimen");
+        }
+        if (loading.kind == FemLoading::Kind::plates) {
+            RigidPlate lower, upper;
+            lower.name = "lower", upper.name = "upper";
+            lower.point = {0, 0, bounds.lo.z};
+            upper.point = {0, 0, bounds.hi.z + loading.startGap};
+            lower.normal = {0, 0, 1}, upper.normal = {0, 0, -1};
+            lower.friction = loading.lower.friction, upper.friction = loading.upper.friction;
+            lowerPlate = model->addPlate(lower);
+            upperPlate = model->addPlate(upper);
+            return;
+        }
+        // Arc load on a disc with its axis along y (meshRock's placement).
+        const Vec3 c = bounds.centre();
+        const double width = bounds.hi.x - bounds.lo.x, height = bounds.hi.z - bounds.lo.z;
+        if (std::abs(width - height) > 0.02 * height)
+            throw UserError(
+                loadingDict.fileName() +
+                ": arcLoad needs a disc with its axis along y (x and z extents equal); the mesh spans " +
+                std::to_string(width) + " m in x and " + std::to_string(height) + " m in z");
+        arcUnitForces = arcLoadUnitForces(mesh, c, loading.arc.halfAngle, arcTopForcePerPascal);
+        if (!(arcTopForcePerPascal > 0))
+            throw UserError(loadingDict.fileName() +
+                            ": arcLoad: no boundary face lies on the arcs; widen halfAngle");
+        const double inset = 0.02 * height;  // inside the faceted surface
+        topPole = locateMaterialPoint(mesh, {c.x, c.y, bounds.hi.z - inset});
+        bottomPole = locateMaterialPoint(mesh, {c.x, c.y, bounds.lo.z + inset});
+    }
+
+    void chooseTimeStep()
+    {
+        stableStep = model->stableTimeStep();
+        if (!time.deltaTGiven()) {
+            time.setDeltaT(stableStep);
+            return;
+        }
+        const double limit = stableStep / parameters.timeStepSafety;
+        if (time.deltaT() > limit)
+            throw UserError(controlDict.fileName() + ": deltaT " + formatNumber(time.deltaT()) +
+                            " s exceeds the stable step " + formatNumber(limit) +
+                            " s of this mesh; remove deltaT to use timeStepSafety x the stable step");
+    }
+
+    // A plate that cannot reach the specimen before endTime would make a run of nothing.
+    void checkPlateReachesSpecimen(const Dictionary& loadingDict) const
+    {
+        if (loading.kind != FemLoading::Kind::plates) return;
+        const double loadingTime = std::max(0.0, time.endTime() - loading.settlingTime);
+        const double travel = loading.approachSpeed() * loadingTime;
+        if (travel <= loading.startGap)
+            throw UserError(
+                loadingDict.fileName() + ": the upper plate travels " + formatNumber(travel) +
+                " m by endTime " + formatNumber(time.endTime()) + " s, less than plates/startGap " +
+                formatNumber(loading.startGap) +
+                " m: it never touches the specimen; reduce startGap or raise endTime or the speed");
+    }
+
+    void readFunctions()
+    {
+        if (!controlDict.found("functions")) return;
+        const Dictionary& functions = controlDict.subDict("functions");
+        if (functions.found("plateForce"))
+            sampleInterval =
+                functions.subDict("plateForce").getOrDefault<long>("writeInterval", sampleInterval);
+        if (sampleInterval < 1)
+            throw UserError(controlDict.fileName() +
+                            ": functions/plateForce/writeInterval must be >= 1 step");
+        if (functions.found("centreStress")) {
+            static const Dimensions metre = Dimensions::fromUnits("m");
+            probeRadius = functions.subDict("centreStress").getScalar("radius", Bounds::positive(), &metre);
+            const Vec3 c = bounds.centre();
+            for (std::size_t e = 0; e < mesh.numTets(); ++e) {
+                Vec3 centroid;
+                for (int a = 0; a < 4; ++a) centroid += 0.25 * mesh.nodes[mesh.tets[e][a]];
+                if (std::hypot(centroid.x - c.x, centroid.z - c.z) < probeRadius)
+                    probeElements.push_back(static_cast<int>(e));
+            }
+            if (probeElements.empty())
+                throw UserError(controlDict.fileName() + ": functions/centreStress/radius " +
+                                formatNumber(probeRadius) + " m holds no element centroid; enlarge it");
+        }
+    }
+
+    // Volume average of the stress over the probe elements (xx yy zz xy yz zx).
+    std::vector<double> centreStressRow() const
+    {
+        double sum[6] = {0, 0, 0, 0, 0, 0}, volume = 0;
+        const auto& stresses = model->state().elementStresses;
+        for (int e : probeElements) {
+            const double v = model->geometry().volumes[e];
+            for (int k = 0; k < 6; ++k) sum[k] += v * stresses[6 * e + k];
+            volume += v;
+        }
+        std::vector<double> row{model->time(), plateForce()};
+        for (double s : sum) row.push_back(s / volume);
+        return row;
+    }
+
+    static std::vector<Column> centreStressColumns()
+    {
+        return {{"Time", "s"},      {"force", "N"},     {"sigma_xx", "Pa"}, {"sigma_yy", "Pa"},
+                {"sigma_zz", "Pa"}, {"sigma_xy", "Pa"}, {"sigma_yz", "Pa"}, {"sigma_zx", "Pa"}};
+    }
+
+    std::vector<double> dropFractions() const
+    {
+        return {sensitivityLow, loading.failureDropFraction, sensitivityHigh};
+    }
+
+    void initialiseDetectors()
+    {
+        detectors.clear();
+        for (double x : dropFractions()) detectors.emplace_back(x);
+        run.detectorMaximum.assign(detectors.size(), 0.0);
+        run.detectorFailed.assign(detectors.size(), 0.0);
+        run.detectorTime.assign(detectors.size(), 0.0);
+    }
+
+    void restoreState()
+    {
+        const fs::path file = app.path(time.startTimeName()) / "femState";
+        run = readFemState(file, *model);
+        if (run.detectorMaximum.size() != detectors.size())
+            throw UserError(file.string() + ": the failure-load detectors do not match this solver");
+        // A detector is its running maximum and whether it has fired: replay both.
+        for (std::size_t k = 0; k < detectors.size(); ++k) {
+            detectors[k].update(run.detectorMaximum[k]);
+            if (run.detectorFailed[k] != 0) detectors[k].update(-1.0);
+        }
+        restarted = true;
+    }
+
+    bool loadingStarted(double t) const { return t >= loading.settlingTime * (1 - 1e-12); }
+
+    // Plate velocities (or the arc load at the end of the step) for the step from t to t + dt.
+    void applyStage(double t, double dt)
+    {
+        if (loading.kind == FemLoading::Kind::plates) {
+            const bool on = loadingStarted(t);
+            model->plate(lowerPlate).velocity = on ? loading.lower.velocity : Vec3{};
+            model->plate(upperPlate).velocity = on ? loading.upper.velocity : Vec3{};
+            return;
+        }
+        const double p = arcPressure(t + dt);
+        std::vector<double> f(arcUnitForces.size());
+        for (std::size_t k = 0; k < f.size(); ++k) f[k] = p * arcUnitForces[k];
+        model->setAppliedForces(f);
+    }
+
+    double arcPressure(double t) const
+    {
+        return loading.arc.pressureRate * std::max(0.0, t - loading.settlingTime);
+    }
+
+    double plateForce() const
+    {
+        if (loading.kind == FemLoading::Kind::arcLoad)
+            return arcPressure(model->time()) * arcTopForcePerPascal;
+        return model->plate(upperPlate).force.z;
+    }
+    double lowerPlateForce() const
+    {
+        if (loading.kind == FemLoading::Kind::arcLoad) return plateForce();
+        return -model->plate(lowerPlate).force.z;
+    }
+    double gapChange() const
+    {
+        if (loading.kind == FemLoading::Kind::arcLoad) {
+            const auto& u = model->state().displacements;
+            return interpolateDisplacement(mesh, u, bottomPole).z -
+                   interpolateDisplacement(mesh, u, topPole).z;
+        }
+        return model->plate(lowerPlate).displacement.z - model->plate(upperPlate).displacement.z;
+    }
+    double elongation() const { return extensometer->elongation(*model); }
+
+    long crackedElements() const
+    {
+        long n = 0;
+        for (std::size_t e = 0; e < mesh.numTets(); ++e) n += model->material().damage(e, 0) > 0.5;
+        return n;
+    }
+
+    double kineticRatio() const
+    {
+        const double w = model->energy().externalWork;
+        return w > 0 ? model->kineticEnergy() / w : 0.0;
+    }
+
+    std::vector<double> plateForceRow() const
+    {
+        return {model->time(),
+                gapChange(),
+                plateForce(),
+                lowerPlateForce(),
+                elongation(),
+                model->kineticEnergy(),
+                model->strainEnergy(),
+                model->energy().externalWork,
+                static_cast<double>(crackedElements())};
+    }
+
+    static std::vector<Column> plateForceColumns()
+    {
+        return {{"Time", "s"},         {"gapChange", "m"},    {"force", "N"},
+                {"forceLower", "N"},   {"elongation", "m"},   {"kinetic", "J"},
+                {"strainEnergy", "J"}, {"externalWork", "J"}, {"crackedElements", "-"}};
+    }
+
+    std::vector<double> extensometerRow() const
+    {
+        const double e = elongation();
+        return {model->time(), e, e / extensometer->length(), plateForce()};
+    }
+
+    static std::vector<Column> extensometerColumns()
+    {
+        return {{"Time", "s"}, {"elongation", "m"}, {"strain", "-"}, {"force", "N"}};
+    }
+
+    // Peak, failure detectors and the running quasi-static check, after every step.
+    void track()
+    {
+        if (!loadingStarted(model->time())) return;
+        const double f = plateForce();
+        run.peakForce = std::max(run.peakForce, f);
+        // The detectors start once the force has reached stop/minPeakForce, so the force
+        // oscillation of the first contact is not taken for a failure.
+        if (run.peakForce < loading.minPeakForce) return;
+        for (std::size_t k = 0; k < detectors.size(); ++k) {
+            if (detectors[k].failed()) continue;
+            if (f > run.detectorMaximum[k]) {
+                run.detectorMaximum[k] = f, run.detectorTime[k] = model->time();
+                if (k == 1) {
+                    run.peakTime = model->time(), run.peakGap = gapChange(),
+                    run.peakElongation = elongation();
+                    run.kineticRatioAtPeak = kineticRatio();
+                }
+            }
+            if (detectors[k].update(f)) run.detectorFailed[k] = 1.0;
+        }
+    }
+
+    // At sample steps, while loading up to failure: warn once when KE / W_ext exceeds the
+    // limit (after the force has passed stop/minPeakForce, so the contact transient is skipped).
+    void checkQuasiStatic()
+    {
+        if (!loadingStarted(model->time()) || detectors[1].failed() || !(plateForce() > loading.minPeakForce))
+            return;
+        const double ratio = kineticRatio();
+        if (ratio > quasiStaticLimit && !quasiStaticWarned) {
+            std::printf(
+                "Warning: t = %.6g s: kinetic energy / external work = %.3g %% > %.3g %%: not "
+                "quasi-static; lower the plate speed or raise massDamping\n",
+                model->time(), 100 * ratio, 100 * quasiStaticLimit);
+            quasiStaticWarned = true;
+        }
+    }
+
+    // The quasi-static check of the whole loading branch, from plateForce.dat (so that it
+    // covers restarted runs): the largest KE / W_ext on the rising branch between 50 % and
+    // 95 % of the peak force.
+    void reportQuasiStatic(const fs::path& plateForceFile) const
+    {
+        const TimeSeries series = readTimeSeries(plateForceFile);
+        const auto force = series.values("force"), kinetic = series.values("kinetic"),
+                   work = series.values("externalWork");
+        std::size_t peak = 0;
+        for (std::size_t k = 0; k < force.size(); ++k)
+            if (force[k] > force[peak]) peak = k;
+        double worst = 0;
+        for (std::size_t k = 0; k < peak; ++k)
+            if (force[k] >= 0.5 * force[peak] && force[k] <= 0.95 * force[peak] && work[k] > 0)
+                worst = std::max(worst, kinetic[k] / work[k]);
+        std::printf(
+            "Quasi-static check: KE / W_ext at most %.3g %% on the rising branch (50-95 %% of the peak "
+            "force), %.3g %% at the peak (limit %.0f %%): %s\n",
+            100 * worst, 100 * run.kineticRatioAtPeak, 100 * quasiStaticLimit,
+            worst < quasiStaticLimit ? "quasi-static" : "NOT quasi-static");
+    }
+
+    // Where the cracks are: the cracked volume (D1 = 1) and its share within H/8 of the
+    // vertical mid-plane x = x_c (H the specimen height along the load): a Brazilian disc
+    // that splits along its loaded diameter has most of it there.
+    void reportCrackLocation() const
+    {
+        const double height = bounds.hi.z - bounds.lo.z, xc = bounds.centre().x;
+        double cracked = 0, nearPlane = 0;
+        for (std::size_t e = 0; e < mesh.numTets(); ++e) {
+            if (!(model->material().damage(e, 0) > 0.5)) continue;
+            double x = 0;
+            for (int a = 0; a < 4; ++a) x += 0.25 * mesh.nodes[mesh.tets[e][a]].x;
+            const double v = model->geometry().volumes[e];
+            cracked += v;
+            if (std::abs(x - xc) < height / 8) nearPlane += v;
+        }
+        std::printf(
+            "Cracked volume %.4g mm^3 (%.3g %% of the specimen); %.3g %% of it within |x - x_c| < H/8 = "
+            "%.4g mm of the loaded mid-plane\n",
+            1e9 * cracked, 100 * cracked / totalVolume(), cracked > 0 ? 100 * nearPlane / cracked : 0.0,
+            1e3 * height / 8);
+    }
+
+    double totalVolume() const
+    {
+        double v = 0;
+        for (double ve : model->geometry().volumes) v += ve;
+        return v;
+    }
+
+    void writeTime()
+    {
+        const double t = model->time();
+        const fs::path staging = time.stagingDir(t);
+        fs::remove_all(staging);
+        fs::create_directories(staging);
+        writeFemState(staging / "femState", *model, run);
+        time.commitTimeDir(t);
+        writeFemVtk(app.casePath(), run.step, *model, restarted || run.step > 0);
+    }
+
+    bool stopCriterionMet() const
+    {
+        if (!loadingStarted(model->time()) || !(loading.stopForceFraction > 0)) return false;
+        return run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
+               plateForce() < loading.stopForceFraction * run.peakForce;
+    }
+
+    std::string progressExtras() const
+    {
+        char buffer[200];
+        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  cracked %ld/%zu  KE/W %.2g %%",
+                      1e-3 * plateForce(), 1e-3 * run.peakForce, crackedElements(), mesh.numTets(),
+                      100 * kineticRatio());
+        return buffer;
+    }
+
+    // postProcessing/failureLoad/0/failureLoad.dat: one row for the first-drop criterion.
+    void writeFailureLoad() const
+    {
+        const std::vector<double> fractions = dropFractions();
+        if (!detectors[1].failed()) {
+            std::printf("Failure load: no drop of more than %.0f %% below the running maximum (%.6g N) yet\n",
+                        100 * fractions[1], run.detectorMaximum[1]);
+            return;
+        }
+        TimeSeriesWriter out(app.casePath(), "failureLoad",
+                             {{"Time", "s"},
+                              {"failureLoad", "N"},
+                              {"dropFraction", "-"},
+                              {"gapChange", "m"},
+                              {"elongation", "m"},
+                              {"kineticRatio", "-"},
+                              {"failureLoad10", "N"},
+                              {"failureLoad30", "N"}});
+        auto load = [&](int k) { return detectors[k].failed() ? detectors[k].failureLoad() : 0.0; };
+        out.append({run.peakTime, load(1), fractions[1], run.peakGap, run.peakElongation,
+                    run.kineticRatioAtPeak, load(0), load(2)});
+        std::printf(
+            "Failure load %.6g N (first drop of more than %.0f %% below the running maximum) at t = %.6g s, "
+            "gap change %.4g mm, extensometer %.4g um; sensitivity: %.6g N (10 %%), %.6g N (30 %%, 0 = "
+            "no such drop)\n",
+            load(1), 100 * fractions[1], run.peakTime, 1e3 * run.peakGap, 1e6 * run.peakElongation, load(0),
+            load(2));
+        const double width = bounds.hi.x - bounds.lo.x, height = bounds.hi.z - bounds.lo.z;
+        if (std::abs(width - height) < 0.02 * height)
+            std::printf("  as a Brazilian disc (D %.4g mm, t %.4g mm): UTS = 2F/(pi D t) = %.4g MPa\n",
+                        1e3 * height, 1e3 * (bounds.hi.y - bounds.lo.y),
+                        1e-6 * 2 * load(1) / (M_PI * height * (bounds.hi.y - bounds.lo.y)));
+    }
+};
+
+FeFractureRun::FeFractureRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
+FeFractureRun::~FeFractureRun() = default;
+
+void FeFractureRun::printSetup() const
+{
+    const Impl& r = *impl_;
+    double mass = 0;
+    for (double m : r.model->nodalMasses()) mass += m;
+    const MaterialParameters& m = r.parameters.material;
+    std::printf("Mesh: %zu tets, %zu nodes, %zu boundary nodes; extent %.4g x %.4g x %.4g mm\n",
+                r.mesh.numTets(), r.mesh.numNodes(), r.model->contactNodes().size(),
+                1e3 * (r.bounds.hi.x - r.bounds.lo.x), 1e3 * (r.bounds.hi.y - r.bounds.lo.y),
+                1e3 * (r.bounds.hi.z - r.bounds.lo.z));
+    std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3", r.parameters.materialName.c_str(),
+                1e-9 * m.youngsModulus, m.poissonRatio, m.density);
+    if (r.parameters.materialName == "kstDfh")
+        std::printf(
+            "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
+            m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus,
+            1e-6 * m.weibullStress, 1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
+    std::printf("\n");
+    std::printf(
+        "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
+        "added mass %.3g %%; mass damping %.4g 1/s\n",
+        r.time.deltaT(), r.stableStep, r.time.endTime(), r.time.endStep(), mass,
+        100 * r.model->addedMassFraction(), r.parameters.massDamping);
+    if (r.loading.kind == FemLoading::Kind::plates)
+        std::printf(
+            "Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, friction %.3g/%.3g, start gap "
+            "%.4g mm, settling %.4g s, gravity (%g %g %g)\n",
+            r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
+            r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
+            r.loading.upper.friction, r.loading.lower.friction, 1e3 * r.loading.startGap,
+            r.loading.settlingTime, r.loading.gravity.x, r.loading.gravity.y, r.loading.gravity.z);
+    else
+        std::printf(
+            "Arc load: 2 x %.4g deg arcs, pressure rate %.4g Pa/s, resultant %.5g N per Pa of pressure\n",
+            2 * r.loading.arc.halfAngle * 180 / M_PI, r.loading.arc.pressureRate, r.arcTopForcePerPascal);
+    std::printf(
+        "Extensometer: l = %.4g mm along z; failure load: first drop of more than %.0f %% below the running "
+        "maximum; quasi-static check: KE / W_ext < %.0f %%\n",
+        1e3 * r.loading.extensometerLength, 100 * r.loading.failureDropFraction, 100 * quasiStaticLimit);
+    if (!r.probeElements.empty())
+        std::printf("centreStress: mean stress of %zu elements within %.4g mm of the disc axis\n",
+                    r.probeElements.size(), 1e3 * r.probeRadius);
+    if (r.restarted)
+        std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.run.step);
+}
+
+int FeFractureRun::execute()
+{
+    Impl& r = *impl_;
+    if (r.app.dryRun()) {
+        std::printf("Dry run: every input is valid; nothing run, nothing written.\n");
+        return exitSuccess;
+    }
+    installInterruptHandlers();
+    // The .dat files print 10 digits, so the row of the restart time may read back a little
+    // above it; the next row is a whole step later (dt / t >> 1e-9).
+    const double restartTime = r.restarted ? r.model->time() * (1 + 1e-9) : -1.0;
+    TimeSeriesWriter plateForce(r.app.casePath(), "plateForce", Impl::plateForceColumns(), restartTime);
+    TimeSeriesWriter extensometer(r.app.casePath(), "extensometer", Impl::extensometerColumns(), restartTime);
+    std::unique_ptr<TimeSeriesWriter> centreStress;
+    if (!r.probeElements.empty())
+        centreStress = std::make_unique<TimeSeriesWriter>(r.app.casePath(), "centreStress",
+                                                          Impl::centreStressColumns(), restartTime);
+    auto sample = [&] {
+        plateForce.append(r.plateForceRow());
+        extensometer.append(r.extensometerRow());
+        if (centreStress) centreStress->append(r.centreStressRow());
+        r.checkQuasiStatic();
+    };
+    const double dt = r.time.deltaT();
+    if (!r.restarted) {
+        r.applyStage(0.0, dt);
+        r.writeTime();
+        sample();
+    }
+    ProgressReporter progress(r.time.startTime(), r.time.endTime());
+    const long endStep = r.time.endStep();
+    std::string reason = "end time reached";
+    int exitCode = exitSuccess;
+    while (r.run.step < endStep) {
+        r.applyStage(r.model->time(), dt);
+        const StepStatus status = r.model->step(dt);
+        ++r.run.step;
+        if (!status.ok) {
+            writeFemVtk(r.app.casePath(), r.run.step, *r.model, true);
+            const auto times = TimeControl::timeDirectories(r.app.casePath());
+            throw UserError(status.message + ". Last complete time directory: " +
+                            (times.empty() ? std::string("none") : r.time.timeName(times.back())) +
+                            "; the failing state is in VTK/fem_" + std::to_string(r.run.step) + ".vtu");
+        }
+        r.track();
+        const bool sampleDue = r.run.step % r.sampleInterval == 0;
+        if (sampleDue) sample();
+        const bool stop = r.stopCriterionMet();
+        if (interrupted()) {
+            reason = "interrupted by a signal: state written, continue with startFrom latestTime";
+            exitCode = interruptExitCode();
+        }
+        if (stop) reason = "stop criterion met (force below the set fraction of its peak)";
+        if (r.time.writeDue(r.run.step) || stop || exitCode != exitSuccess || r.run.step == endStep) {
+            if (!sampleDue) sample();
+            r.writeTime();
+        }
+        if (stop || exitCode != exitSuccess) break;
+        progress.update(r.run.step, r.model->time(), [&] { return r.progressExtras(); });
+    }
+    progress.finish(r.run.step, r.model->time(), reason);
+    const EnergyBalance& e = r.model->energy();
+    std::printf("Peak force %.6g N; %ld of %zu elements cracked (D1 = 1)\n", r.run.peakForce,
+                r.crackedElements(), r.mesh.numTets());
+    std::printf(
+        "Energy: external work %.4g J, internal work %.4g J, damping %.4g J, kinetic %.4g J, strain %.4g J\n",
+        e.externalWork, e.internalWork, e.dampingWork, r.model->kineticEnergy(), r.model->strainEnergy());
+    r.reportQuasiStatic(plateForce.path());
+    r.reportCrackLocation();
+    if (exitCode == exitSuccess) r.writeFailureLoad();
+    return exitCode;
+}
+
+}  // namespace rockfrac
