@@ -111,10 +111,11 @@ CalibrationOutcome calibrate(const CalibrationStudy& study, int jobs)
     return detail::calibrateDemResponseSurface(study, jobs);
 }
 
-void writeCalibratedValues(const CalibrationStudy& study, const CalibrationOutcome& outcome)
+void writeCalibratedValues(const CalibrationStudy& study, const CalibrationOutcome& outcome, bool intoCase)
 {
     // Check every edit first (checkOnly), then write: a failure leaves every file as it was.
     for (bool checkOnly : {true, false}) {
+        if (!intoCase) break;
         for (std::size_t i = 0; i < study.parameters.size(); ++i) {
             const auto& p = study.parameters[i];
             editDictionaryFile(

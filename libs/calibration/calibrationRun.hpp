@@ -50,7 +50,8 @@ struct CalibrationOutcome {
 CalibrationOutcome calibrate(const CalibrationStudy& study, int jobs);
 
 // Write the calibrated values (and tied entries) into the target case's files
-// with `comment`, and <study>/calibratedValues.<method>.
-void writeCalibratedValues(const CalibrationStudy& study, const CalibrationOutcome& outcome);
+// with `comment` (unless !intoCase), and the report <study>/calibratedValues.<method>.
+void writeCalibratedValues(const CalibrationStudy& study, const CalibrationOutcome& outcome,
+                           bool intoCase = true);
 
 }  // namespace rockfrac::calibration

@@ -119,6 +119,7 @@ void readTarget(const Dictionary& dict, CalibrationStudy& s)
 {
     const Dictionary& t = dict.subDict("target");
     s.responseFile = t.get<std::string>("response");
+    for (const auto& p : s.parameters) s.reference.push_back(0.5 * (p.low + p.high));  // BOBYQA starts here
     if (s.model == "fem") {
         s.forceColumn = t.getOrDefault<std::string>("failureLoad", "failureLoad");
         s.distance = t.found("distance") ? t.getWord("distance", {"wasserstein1", "kolmogorovSmirnov"})
@@ -144,7 +145,6 @@ void readTarget(const Dictionary& dict, CalibrationStudy& s)
     if (s.forceWeight + s.displacementWeight <= 0)
         throw UserError(t.endLocation().str() + ": forceWeight and displacementWeight are both 0");
     s.regularisation = t.getScalarOrDefault("regularisation", 1e-3, Bounds::nonNegative());
-    for (const auto& p : s.parameters) s.reference.push_back(0.5 * (p.low + p.high));
     if (t.found("reference")) {
         const auto& ref = t.subDict("reference");
         for (std::size_t i = 0; i < s.parameters.size(); ++i)
@@ -196,11 +196,11 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
     if (s.model == "fem" && s.method != "bobyqa")
         throw UserError(dict.location("method").str() +
                         ": the FEM calibration matches a distribution over seeds directly: method bobyqa");
-    s.targetCase = studyDirectory / dict.get<std::string>("case");
+    s.targetCase = (studyDirectory / dict.get<std::string>("case")).lexically_normal();
     if (!fs::is_directory(s.targetCase))
         throw UserError(dict.location("case").str() + ": case '" + s.targetCase.string() +
                         "' does not exist; give the case to calibrate, relative to the study");
-    s.measurementsFile = studyDirectory / dict.get<std::string>("measurements");
+    s.measurementsFile = (studyDirectory / dict.get<std::string>("measurements")).lexically_normal();
     if (!fs::is_regular_file(s.measurementsFile))
         throw UserError(dict.location("measurements").str() + ": no measurements file '" +
                         s.measurementsFile.string() + "'");

@@ -187,7 +187,7 @@ void prepareTemplate(const CalibrationStudy& study)
     if (fs::exists(stamp) && fs::last_write_time(stamp) >= newestInput(study.targetCase)) return;
     fs::remove_all(dir);
     copyInputs(study.targetCase, dir);
-    // A tied entry follows its parameter in every member: cohesion #eval "1.5 * ${/bond/tensileStrength}".
+    // A tied entry follows its parameter in every member: cohesion #eval "1.5 * $tensileStrength".
     for (const TiedEntry& t : study.tied) {
         const auto& p = study.parameters[t.parameter];
         const auto parent = [](const std::string& path) { return path.substr(0, path.rfind('/') + 1); };
@@ -197,8 +197,7 @@ void prepareTemplate(const CalibrationStudy& study)
                             ")");
         setEntryInFile(
             dir / t.file, t.entry,
-            "#eval \"" + formatNumber(t.factor) + " * $" + p.entry.substr(parent(p.entry).size()) + "\"",
-            "calibrateModel: " + formatNumber(t.factor) + " x " + p.name);
+            "#eval \"" + formatNumber(t.factor) + " * $" + p.entry.substr(parent(p.entry).size()) + "\"");
     }
     if (!study.prepareCommand.empty()) {
         std::cout << "calibrateModel: preparing the template (" << study.prepareCommand << ") in "

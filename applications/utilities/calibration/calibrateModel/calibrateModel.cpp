@@ -45,7 +45,7 @@ const AppInfo info = {
     {
         {"-jobs", "N", "simulations at the same time (overrides 'jobs')"},
         {"-method", "name", "responseSurface or bobyqa (overrides 'method')"},
-        {"-noWrite", "", "calibrate, but write nothing into the case or the study (no report)"},
+        {"-noWrite", "", "leave the case unchanged; only the report calibratedValues.<method> is written"},
     },
     0,
     0,
@@ -99,13 +99,14 @@ int run(Application& app)
     for (const auto& line : outcome.report)
         std::cout << "  " << line[0] << " " << line[1]
                   << (line.size() > 2 && !line[2].empty() ? "  " + line[2] : "") << "\n";
-    if (!app.has("-noWrite")) {
-        writeCalibratedValues(study, outcome);
-        std::cout << "calibrateModel: wrote the values into " << study.targetCase.string() << " and "
-                  << (study.directory / ("calibratedValues." + outcome.method)).string() << std::endl;
-    } else {
-        std::cout << "calibrateModel: -noWrite: the case is unchanged" << std::endl;
-    }
+    const bool intoCase = !app.has("-noWrite");
+    writeCalibratedValues(study, outcome, intoCase);
+    std::cout << "calibrateModel: wrote "
+              << (study.directory / ("calibratedValues." + outcome.method)).string();
+    if (intoCase)
+        std::cout << " and the values into " << study.targetCase.string() << std::endl;
+    else
+        std::cout << "; -noWrite: the case is unchanged" << std::endl;
     return exitSuccess;
 }
 
