@@ -150,7 +150,7 @@ void writeCalibratedValues(const CalibrationStudy& study, const CalibrationOutco
         out << "}\n\nreport\n{\n";
         for (const auto& line : outcome.report)
             out << "    " << line[0] << "    " << line[1] << ";"
-                << (line.size() > 2 ? "    // " + line[2] : "") << "\n";
+                << (line.size() > 2 && !line[2].empty() ? "    // " + line[2] : "") << "\n";
         out << "}\n";
     });
 }
