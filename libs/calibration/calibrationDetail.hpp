@@ -1,0 +1,27 @@
+#pragma once
+// Internal to libs/calibration: the procedures behind calibrate() and their helpers.
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "calibration/calibrationRun.hpp"
+#include "calibration/studyRunner.hpp"
+
+namespace rockfrac::calibration::detail {
+
+CalibrationOutcome calibrateDemResponseSurface(const CalibrationStudy& study, int jobs);
+CalibrationOutcome calibrateDemBobyqa(const CalibrationStudy& study, int jobs);
+CalibrationOutcome calibrateFemBobyqa(const CalibrationStudy& study, int jobs);
+
+// Physical values of a normalised point, rounded as members get them.
+std::vector<double> physicalValues(const CalibrationStudy& study, const std::vector<double>& x);
+std::vector<double> unitValues(const CalibrationStudy& study, const std::vector<double>& values);
+// A one-point RunSet (one value per parameter).
+RunSet pointRunSet(const std::filesystem::path& directory, const std::vector<double>& values);
+
+std::string format(double value, int digits = 4);
+// The study directory's name (of "." too).
+std::string studyName(const CalibrationStudy& study);
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+}  // namespace rockfrac::calibration::detail
