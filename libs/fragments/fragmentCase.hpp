@@ -1,6 +1,6 @@
 #pragma once
 // fragmentPSD's case I/O: which time directory to read, the DEM state at that
-// time, and the outputs (docs/user-guide-fragments.md):
+// time, and the outputs (docs/user-guide.md):
 //   postProcessing/fragmentPSD/<time>/fragments.dat   one row per fragment
 //   postProcessing/fragmentPSD/<time>/psd.dat         cumulative mass passing
 //   postProcessing/fragmentPSD/<time>/summary.dat     counts, P50, P80, t10

@@ -1,5 +1,5 @@
 // Timing of the fragment analysis on 10^5 cells (hidden: run with
-// `test_fragments "[.benchmark]"`; docs/user-guide-fragments.md quotes the result).
+// `test_fragments "[.benchmark]"`; docs/user-guide.md quotes the result).
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdio>
