@@ -12,6 +12,11 @@ mkdir -p "$work/study/system"
 copyTutorial tutorials/BDT/granite "$work/study/bdt"
 cd "$work/study"
 caseDict -case bdt system/voronoiMeshDict -entry nCells -set 60 > /dev/null
+# The truth: the paper's Table 3 bond values, whatever the tutorial holds now.
+caseDict -case bdt constant/rockProperties -entry bond/E -set "[1 -1 -2 0 0 0 0] 46e9" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/tensileStrength -set "[1 -1 -2 0 0 0 0] 28e6" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/cohesion -set "[1 -1 -2 0 0 0 0] 42e6" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/frictionCoefficient -set 0.8 > /dev/null
 
 # The truth: the solver itself on a copy of the case.
 cp -r bdt truth
