@@ -1,0 +1,118 @@
+// benchDem: speed and memory of the bonded Voronoi DEM (docs/benchmarks.md).
+//
+//   benchDem                    intact bonded blocks of 1e4 and 1e5 cells, 1 and 2 threads
+//   benchDem -case <dir> [N]    a bondedDemFoam case from its latest time directory (e.g. an
+//                               SPB rock after fracture), N steps
+//
+// Prints cell-steps per second (wall clock, best of 3 repetitions), bonds per cell and the
+// model's memory per cell. Not a test: speed is measured here, never asserted.
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "core/random.hpp"
+#include "core/timeControl.hpp"
+#include "dem/demModel.hpp"
+#include "demCase/demCase.hpp"
+#include "core/dictionary.hpp"
+#include "voronoi/domain.hpp"
+#include "voronoi/tessellation.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
+
+using namespace rockfrac;
+
+namespace {
+
+double secondsFor(DemModel& model, int steps, double dt)
+{
+    const auto start = std::chrono::steady_clock::now();
+    for (int s = 0; s < steps; ++s) model.step(dt);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void report(const char* what, int nCells, int nBonds, std::size_t bytes, int threads, int steps, double seconds)
+{
+    std::printf("%-28s %8d %6.1f %3d %7d %10.3f %12.4g %8.0f\n", what, nCells, 2.0 * nBonds / nCells, threads, steps,
+                seconds, static_cast<double>(nCells) * steps / seconds, static_cast<double>(bytes) / nCells);
+}
+
+void header()
+{
+    std::printf("%-28s %8s %6s %3s %7s %10s %12s %8s\n", "case", "cells", "b/cell", "thr", "steps", "wall [s]",
+                "cell-steps/s", "B/cell");
+}
+
+void intactBlock(int nCells, int steps)
+{
+    // A block with the BDT's cell size (meso constant 7.25e-8 m^3), pd 0.6 of the spacing.
+    const double volume = nCells * 7.25e-8;
+    const double side = std::cbrt(volume / 2.0);
+    const Domain domain = Domain::box({0, 0, 0}, {2 * side, side, side});
+    const double spacing = std::cbrt(7.25e-8);
+    const VoronoiMesh mesh = generateVoronoiMesh(domain, nCells, 0.6 * spacing, 7);
+    DemParameters p;
+    p.bond_tensile_strength = 1e12;  // intact: no bond ever breaks
+    p.bond_cohesion = 1.5e12;
+    p.gravity = {0, 0, 0};
+    p.damping_reading = DampingReading::criticalFraction;
+    p.bond_damping = 0.05;
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        DemModel model(mesh, p);
+        SplitMix64 random(3);
+        for (int c = 0; c < model.cells().size(); ++c)
+            model.setCellVelocity(c, {random.uniform(-1e-3, 1e-3), random.uniform(-1e-3, 1e-3), 0}, {});
+        const double dt = 0.5 * model.criticalTimeStep().value;
+        secondsFor(model, 5, dt);  // warm up: lists, caches
+        double best = 1e300;
+        for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
+        report(("intact block " + std::to_string(nCells)).c_str(), model.cells().size(), model.bonds().size(),
+               model.memoryBytes(), threads, steps, best);
+    }
+}
+
+void fromCase(const std::string& caseDir, int steps)
+{
+    const VoronoiMesh mesh = readVoronoiMesh(caseDir);
+    const Dictionary props = Dictionary::readFile(caseDir + "/constant/rockProperties");
+    DemParameters p = readDemParameters(props);
+    const auto times = TimeControl::timeDirectories(caseDir);
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        DemModel model(mesh, p);
+        // Plates as bondedDemFoam places them (then restored from the state).
+        double zMin = 1e300, zMax = -1e300;
+        for (const auto& v : mesh.vertices) {
+            zMin = std::min(zMin, v.z);
+            zMax = std::max(zMax, v.z);
+        }
+        model.addPlate({0, 0, zMin}, {0, 0, 1});
+        model.addPlate({0, 0, zMax}, {0, 0, -1});
+        char name[64];
+        std::snprintf(name, sizeof(name), "%.12g", times.empty() ? 0.0 : times.back());
+        if (!times.empty()) readDemState(caseDir + "/" + name + "/demState", model);
+        const double dt = 0.5 * model.criticalTimeStep().value;
+        double best = 1e300;
+        for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
+        std::string label = "case t=" + std::string(name) + " (" + std::to_string(model.counters().bonds_broken) +
+                            " broken)";
+        report(label.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps, best);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    header();
+    if (argc >= 3 && std::strcmp(argv[1], "-case") == 0) {
+        fromCase(argv[2], argc >= 4 ? std::atoi(argv[3]) : 2000);
+        return 0;
+    }
+    intactBlock(10000, 100);
+    intactBlock(100000, 10);
+    return 0;
+}
