@@ -86,3 +86,22 @@ function(rockfrac_add_subdirectories dir)
     add_subdirectory(${d})
   endforeach()
 endfunction()
+
+# rockfrac_add_fuzz_target(<name> SOURCES ... [DEPS ...])
+# A libFuzzer executable (only with -DROCKFRAC_FUZZ=ON and clang; the `fuzz`
+# preset). The reader under test is listed in SOURCES so that it carries the
+# fuzzer's coverage instrumentation; DEPS are linked as they are (they must not
+# contain those sources again).
+function(rockfrac_add_fuzz_target name)
+  cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
+  if(NOT (ROCKFRAC_FUZZ AND CMAKE_CXX_COMPILER_ID MATCHES "Clang"))
+    return()
+  endif()
+  add_executable(${name} ${A_SOURCES})
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/libs)
+  target_link_libraries(${name} PRIVATE ${A_DEPS})
+  set(fuzz_flags -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_compile_options(${name} PRIVATE ${fuzz_flags})
+  target_link_options(${name} PRIVATE ${fuzz_flags})
+  rockfrac_target_options(${name})
+endfunction()

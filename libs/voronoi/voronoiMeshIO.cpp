@@ -46,7 +46,8 @@ std::string displayName(const fs::path& caseDir, const char* file)
 // sees a half-written mesh file.
 void writeAtomically(const fs::path& path, const std::string& /*label*/, const char* data, std::size_t size)
 {
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(data, static_cast<std::streamsize>(size)); });
+    writeFileAtomically(path,
+                        [&](std::ostream& out) { out.write(data, static_cast<std::streamsize>(size)); });
 }
 
 Bytes readWholeFile(const fs::path& path, const std::string& label)
@@ -662,6 +663,11 @@ void checkArraySizes(const VoronoiMesh& m)
 
 }  // namespace
 
+std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size)
+{
+    return checksum(data, size);
+}
+
 void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 {
     checkArraySizes(mesh);
@@ -698,6 +704,12 @@ void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 
     const std::string text = meshInfoText(info);  // last: it vouches for the others
     writeAtomically(dir / "meshInfo", displayName(caseDir, "meshInfo"), text.data(), text.size());
+}
+
+VoronoiMeshSizes readVoronoiMeshSizes(const fs::path& caseDir)
+{
+    const MeshInfo info = readMeshInfo(caseDir);
+    return {info.nCells, info.nVertices, info.nFaces, info.nFaceVertices, info.nBondedFaces, info.nBonds};
 }
 
 VoronoiMesh readVoronoiMesh(const fs::path& caseDir)
