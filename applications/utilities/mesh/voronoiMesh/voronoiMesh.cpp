@@ -117,15 +117,22 @@ int main(int argc, char** argv)
         std::printf("Seeding %d cells, pruning distance %.4g mm, seed %llu, domain volume %.6g m^3\n",
                     request.nCells, 1e3 * request.pruningDistance,
                     static_cast<unsigned long long>(request.seed), domain.volume());
-        const VoronoiMesh mesh = generateVoronoiMesh(domain, request.nCells, request.pruningDistance,
-                                                     request.seed, request.dilationFraction);
+        const VoronoiMesh mesh = [&] {
+            try {
+                return generateVoronoiMesh(domain, request.nCells, request.pruningDistance, request.seed,
+                                           request.dilationFraction);
+            } catch (const UserError& e) {  // the settings that cannot be met are in this file
+                throw UserError(dict.fileName() + ": " + e.what());
+            }
+        }();
         double volume = 0;
         for (double v : mesh.volumes) volume += v;
         const double volumeError = (volume - domain.volume()) / domain.volume();
-        std::printf("voronoiMesh: %d cells, mean size %.4g mm, %d bonds, volume error %+.3g %%, "
-                    "meso constant %.4g m^3, dilation radius %.4g mm\n",
-                    mesh.nCells(), 1e3 * meanCellSize(mesh), mesh.nBonds(), 100 * volumeError,
-                    volume / mesh.nCells(), 1e3 * mesh.dilationRadius);
+        std::printf(
+            "voronoiMesh: %d cells, mean size %.4g mm, %d bonds, volume error %+.3g %%, "
+            "meso constant %.4g m^3, dilation radius %.4g mm\n",
+            mesh.nCells(), 1e3 * meanCellSize(mesh), mesh.nBonds(), 100 * volumeError, volume / mesh.nCells(),
+            1e3 * mesh.dilationRadius);
         if (app.dryRun()) {
             std::printf("Dry run: nothing written.\n");
             return 0;
