@@ -27,9 +27,8 @@ namespace {
 // it with the measured peak.
 std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& s)
 {
-    constexpr std::uint64_t perCell = 4000, perVertex = 200, perFace = 150, perFaceVertex = 16,
-                            perBondedFace = 400, perBond = 2 * sizeof(VoronoiBond) + 200,
-                            libraries = 100000000;
+    constexpr std::uint64_t perCell = 2000, perVertex = 100, perFace = 80, perFaceVertex = 8,
+                            perBondedFace = 200, perBond = sizeof(VoronoiBond) + 150, libraries = 50000000;
     return libraries + perCell * s.nCells + perVertex * s.nVertices + perFace * s.nFaces +
            perFaceVertex * s.nFaceVertices + perBondedFace * s.nBondedFaces + perBond * s.nBonds;
 }

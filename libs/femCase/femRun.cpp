@@ -98,7 +98,7 @@ struct FeFractureRun::Impl {
     // and libraries (gmsh, VTK). docs/reliability.md compares it with the peak.
     void checkFemMemory(const fs::path& msh) const
     {
-        constexpr std::uint64_t perNode = 1000, perTet = 3000, libraries = 150000000;
+        constexpr std::uint64_t perNode = 1000, perTet = 2000, libraries = 80000000;
         const std::uint64_t estimate = libraries + perNode * mesh.numNodes() + perTet * mesh.numTets();
         checkMemoryFits(
             estimate,
