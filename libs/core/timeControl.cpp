@@ -109,6 +109,22 @@ std::string TimeControl::timeName(double time) const
 
 fs::path TimeControl::stagingDir(double time) const { return case_ / (".tmp." + timeName(time)); }
 
+fs::path TimeControl::prepareStagingDir(double time) const
+{
+    const fs::path staging = stagingDir(time);
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    if (!ec) fs::create_directories(staging, ec);
+    if (ec) {
+        const auto times = timeDirectories(case_);
+        throw UserError("cannot write time directory " + (case_ / timeName(time)).string() + " (" +
+                        ec.message() +
+                        "); check the free space and permissions of the case; the last complete time is " +
+                        (times.empty() ? std::string("none") : timeName(times.back())));
+    }
+    return staging;
+}
+
 void TimeControl::commitTimeDir(double time)
 {
     const fs::path staging = stagingDir(time), final = case_ / timeName(time);
@@ -119,11 +135,15 @@ void TimeControl::commitTimeDir(double time)
         fs::remove_all(old, ec);
         fs::rename(final, old, ec);
         fs::rename(staging, final, ec);
-        if (ec) throw UserError("cannot publish time directory " + final.string() + ": " + ec.message());
+        if (ec)
+            throw UserError("cannot publish time directory " + final.string() + ": " + ec.message() +
+                            "; check the free space and permissions of the case");
         fs::remove_all(old, ec);
     } else {
         fs::rename(staging, final, ec);
-        if (ec) throw UserError("cannot publish time directory " + final.string() + ": " + ec.message());
+        if (ec)
+            throw UserError("cannot publish time directory " + final.string() + ": " + ec.message() +
+                            "; check the free space and permissions of the case");
     }
     written_.push_back(time);
     std::sort(written_.begin(), written_.end());

@@ -44,6 +44,9 @@ public:
 
     std::string timeName(double time) const;
     std::filesystem::path stagingDir(double time) const;  // "<case>/.tmp.<time>"
+    // An empty staging dir for `time`; UserError naming it when it cannot be
+    // made (read-only case, disk full): the previous time directories are kept.
+    std::filesystem::path prepareStagingDir(double time) const;
     // Publish a filled staging dir as "<case>/<time>" (replacing an old one) and
     // purge old time directories when purgeWrite > 0.
     void commitTimeDir(double time);

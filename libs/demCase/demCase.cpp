@@ -4,6 +4,8 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "dem/bondLaw.hpp"
+#include "dem/contactLaw.hpp"
 #include "io/stateFile.hpp"
 #include "io/vtkOutput.hpp"
 
@@ -30,7 +32,7 @@ DemParameters readDemParameters(const Dictionary& d)
     p.steel_poisson_ratio = steel.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
 
     const Dictionary& bond = d.subDict("bond");
-    p.bond_law = bond.get<std::string>("model");
+    p.bond_law = bond.getWord("model", bondLawNames());  // the error names the file and line
     p.bond_youngs_modulus = bond.getScalar("E", Bounds::positive(), &pascal);
     p.bond_poisson_ratio = bond.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
     p.bond_tensile_strength = bond.getScalar("tensileStrength", Bounds::positive(), &pascal);
@@ -44,7 +46,7 @@ DemParameters readDemParameters(const Dictionary& d)
     p.bond_damping = damping.getScalar("beta", Bounds::nonNegative());
 
     const Dictionary& contact = d.subDict("contact");
-    p.contact_law = contact.get<std::string>("model");
+    p.contact_law = contact.getWord("model", contactLawNames());
     const Dictionary& rockRock = contact.subDict("rockRock");
     p.rock_rock_friction = rockRock.getScalar("friction", Bounds::nonNegative());
     p.rock_rock_restitution = rockRock.getScalar("restitution", Bounds::open(0, 1.000001));

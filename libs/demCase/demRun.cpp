@@ -7,6 +7,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/memoryLimit.hpp"
 #include "core/progress.hpp"
 #include "core/timeControl.hpp"
 #include "demCase/demCase.hpp"
@@ -16,6 +17,34 @@
 namespace rockfrac {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Bytes the run holds per mesh item: the VoronoiMesh as read (with its file
+// buffers), the DemModel's cell, interface and bond arrays (DemModel::memoryBytes
+// itemises them), and a generous share of neighbour and contact lists per cell;
+// plus the code and libraries. An upper estimate: docs/reliability.md compares
+// it with the measured peak.
+std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& s)
+{
+    constexpr std::uint64_t perCell = 2000, perVertex = 100, perFace = 80, perFaceVertex = 8,
+                            perBondedFace = 200, perBond = sizeof(VoronoiBond) + 150, libraries = 50000000;
+    return libraries + perCell * s.nCells + perVertex * s.nVertices + perFace * s.nFaces +
+           perFaceVertex * s.nFaceVertices + perBondedFace * s.nBondedFaces + perBond * s.nBonds;
+}
+
+// Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp).
+void checkDemMemory(const fs::path& caseDir)
+{
+    const VoronoiMeshSizes sizes = readVoronoiMeshSizes(caseDir);
+    checkMemoryFits(estimateDemMemoryBytes(sizes),
+                    (caseDir / voronoiMeshDirectory / "meshInfo").lexically_normal().string() + ": " +
+                        std::to_string(sizes.nCells) + " cells and " + std::to_string(sizes.nBonds) +
+                        " bonds",
+                    "use fewer cells (nCells of system/voronoiMeshDict) or a machine with more memory");
+}
+
+}  // namespace
 
 struct BondedDemRun::Impl {
     const Application& app;
@@ -48,6 +77,7 @@ struct BondedDemRun::Impl {
         if (!fs::exists(a.path("constant/voronoiMesh/meshInfo")))
             throw UserError("missing " + a.path("constant/voronoiMesh").string() +
                             "; run voronoiMesh first to make the bonded cells");
+        checkDemMemory(a.casePath());
         mesh = readVoronoiMesh(a.casePath());
         model = std::make_unique<DemModel>(mesh, parameters);
         shapes = captureCellShapes(mesh, *model);
@@ -163,9 +193,7 @@ struct BondedDemRun::Impl {
     void writeTime()
     {
         const double t = model->time();
-        const fs::path staging = time.stagingDir(t);
-        fs::remove_all(staging);
-        fs::create_directories(staging);
+        const fs::path staging = time.prepareStagingDir(t);
         writeDemState(staging / "demState", *model, step, peakForce, loadingStarted);
         time.commitTimeDir(t);
         writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
@@ -271,8 +299,11 @@ int BondedDemRun::execute()
         }
         if (stop)
             reason = "stop criterion met (force below the set fraction of its peak, or maximum approach)";
-        if (r.time.writeDue(r.step) || stop || exitCode != exitSuccess || r.step == endStep) {
-            if (r.step % r.sampleInterval != 0) plateForce.append(r.sampleRow());
+        // A write time adds a row to the series only when the uninterrupted run has it
+        // too: not at the step a signal arrived, or the continued series would differ.
+        const bool regularWrite = r.time.writeDue(r.step) || stop || r.step == endStep;
+        if (regularWrite || exitCode != exitSuccess) {
+            if (r.step % r.sampleInterval != 0 && regularWrite) plateForce.append(r.sampleRow());
             r.writeTime();
         }
         if (stop || exitCode != exitSuccess) break;

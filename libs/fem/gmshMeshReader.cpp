@@ -123,22 +123,31 @@ TetMesh readGmshMesh(const std::string& path)
         int callerThreads;
         ~Cleanup()
         {
-            if (ownSession)
-                gmsh::finalize();
-            else
-                gmsh::model::remove();
+            // A destructor must not throw (std::terminate); gmsh throws std::string.
+            try {
+                if (ownSession)
+                    gmsh::finalize();
+                else
+                    gmsh::model::remove();
+            } catch (...) {
+            }
             omp_set_num_threads(callerThreads);
         }
     } cleanup{ownSession, callerThreads};
+    // gmsh reports a truncated or corrupt file by throwing a std::string (its C++
+    // API) or an exception; either becomes a UserError naming the file.
+    const std::string advice = "; re-run meshRock to write the mesh again";
     try {
         gmsh::open(path);
-    } catch (const std::exception& e) {
-        throw UserError("cannot read gmsh mesh '" + path + "': " + e.what());
-    }
-    try {
         return tetMeshFromGmshModel();
     } catch (const UserError& e) {
         throw UserError("'" + path + "': " + e.what());
+    } catch (const std::exception& e) {
+        throw UserError("cannot read gmsh mesh '" + path + "': " + e.what() + advice);
+    } catch (const std::string& e) {
+        throw UserError("cannot read gmsh mesh '" + path + "': " + e + advice);
+    } catch (...) {
+        throw UserError("cannot read gmsh mesh '" + path + "': gmsh failed" + advice);
     }
 }
 

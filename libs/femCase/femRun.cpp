@@ -6,6 +6,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/memoryLimit.hpp"
 #include "core/progress.hpp"
 #include "core/timeControl.hpp"
 #include "fem/measurements.hpp"
@@ -78,6 +79,7 @@ struct FeFractureRun::Impl {
             throw UserError("missing " + msh.string() +
                             "; run meshRock with a system/feMeshDict first to make the tetrahedral mesh");
         mesh = readGmshMesh(msh.string());  // rejects inverted or degenerate elements
+        checkFemMemory(msh);
         bounds = meshBounds(mesh);
         model = std::make_unique<FemModel>(mesh, parameters);
         placeLoads(loadingDict);
@@ -86,6 +88,23 @@ struct FeFractureRun::Impl {
         readFunctions();
         initialiseDetectors();
         if (time.restarting()) restoreState();
+    }
+
+    // Refuse a mesh whose model cannot fit, before the model's arrays exist
+    // (core/memoryLimit.hpp). Bytes per node (positions, displacements,
+    // velocities, forces, masses and their parallel partial sums) and per
+    // tetrahedron (geometry, gradients, stresses, KST-DFH state with three
+    // Weibull thresholds, per-thread partial forces), generously; plus the code
+    // and libraries (gmsh, VTK). docs/reliability.md compares it with the peak.
+    void checkFemMemory(const fs::path& msh) const
+    {
+        constexpr std::uint64_t perNode = 1000, perTet = 2000, libraries = 80000000;
+        const std::uint64_t estimate = libraries + perNode * mesh.numNodes() + perTet * mesh.numTets();
+        checkMemoryFits(
+            estimate,
+            msh.string() + ": " + std::to_string(mesh.numNodes()) + " nodes and " +
+                std::to_string(mesh.numTets()) + " tetrahedra",
+            "use a coarser mesh (elementSize of system/feMeshDict) or a machine with more memory");
     }
 
     void readSolverControls()
@@ -425,9 +444,7 @@ struct FeFractureRun::Impl {
     void writeTime()
     {
         const double t = model->time();
-        const fs::path staging = time.stagingDir(t);
-        fs::remove_all(staging);
-        fs::create_directories(staging);
+        const fs::path staging = time.prepareStagingDir(t);
         writeFemState(staging / "femState", *model, run);
         time.commitTimeDir(t);
         writeFemVtk(app.casePath(), run.step, *model, restarted || run.step > 0);
@@ -586,8 +603,11 @@ int FeFractureRun::execute()
             exitCode = interruptExitCode();
         }
         if (stop) reason = "stop criterion met (force below the set fraction of its peak)";
-        if (r.time.writeDue(r.run.step) || stop || exitCode != exitSuccess || r.run.step == endStep) {
-            if (!sampleDue) sample();
+        // A write time adds a row to the series only when the uninterrupted run has it
+        // too: not at the step a signal arrived, or the continued series would differ.
+        const bool regularWrite = r.time.writeDue(r.run.step) || stop || r.run.step == endStep;
+        if (regularWrite || exitCode != exitSuccess) {
+            if (!sampleDue && regularWrite) sample();
             r.writeTime();
         }
         if (stop || exitCode != exitSuccess) break;

@@ -91,8 +91,10 @@ Specimen buildDisc(const Dictionary& d)
     Specimen s;
     s.kind = Specimen::Kind::disc;
     s.source = "disc";
-    s.diameter = d.getScalar("diameter", Bounds::positive());
-    s.thickness = d.getScalar("thickness", Bounds::positive());
+    // A dimension set is optional, but checked when given ([kg] 44.8e-3 is refused).
+    static const Dimensions metre = Dimensions::fromUnits("m");
+    s.diameter = d.getScalar("diameter", Bounds::positive(), &metre);
+    s.thickness = d.getScalar("thickness", Bounds::positive(), &metre);
     s.centre = d.getOrDefault<Vec3>("centre", Vec3{});
     const int nSegments = d.getOrDefault<int>("nSegments", 128);
     if (nSegments < 8)

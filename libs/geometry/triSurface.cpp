@@ -125,8 +125,14 @@ TriSurface readStl(const fs::path& file)
 {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw UserError("cannot read STL '" + file.string() + "': no such file or not readable");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (bytes.empty()) throw UserError(file.string() + ": empty file; expected an ASCII or binary STL surface");
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return parseStl(bytes, file);
+}
+
+TriSurface parseStl(const std::string& bytes, const fs::path& file)
+{
+    if (bytes.empty())
+        throw UserError(file.string() + ": empty file; expected an ASCII or binary STL surface");
 
     // ASCII files start with "solid" and contain "facet"; some binary headers
     // also start with "solid", so a file whose size matches the binary layout

@@ -19,6 +19,9 @@ struct TriSurface {
 // welded. UserError naming the file for unreadable, truncated, empty or
 // non-finite input.
 TriSurface readStl(const std::filesystem::path& file);
+// The same from the file's bytes already in memory; `file` only names it in
+// messages (the STL fuzz target, tests/fuzz/stl, calls this).
+TriSurface parseStl(const std::string& bytes, const std::filesystem::path& file);
 // ASCII STL, written atomically.
 void writeStl(const std::filesystem::path& file, const TriSurface& surface, const std::string& solidName);
 

@@ -174,6 +174,11 @@ StateFile StateFile::read(const fs::path& file)
     std::ifstream in(file, std::ios::binary);
     if (!in) throw UserError(file.string() + ": cannot read the state file (missing or unreadable)");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return parse(bytes, file);
+}
+
+StateFile StateFile::parse(const std::string& bytes, const fs::path& file)
+{
     Reader r(bytes, file);
     if (r.takeString(sizeof(magic), "the magic string") != std::string(magic, sizeof(magic)))
         r.fail("not a rockfrac state file (wrong magic string)");

@@ -39,6 +39,8 @@ public:
 
     void write(const std::filesystem::path& file) const;  // atomically
     static StateFile read(const std::filesystem::path& file);
+    // The same from the file's bytes in memory; `file` only names it in messages.
+    static StateFile parse(const std::string& bytes, const std::filesystem::path& file);
 
 private:
     std::filesystem::path source_;  // for messages

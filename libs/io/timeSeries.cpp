@@ -1,5 +1,6 @@
 #include "io/timeSeries.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -57,6 +58,10 @@ TimeSeriesWriter::TimeSeriesWriter(const fs::path& caseDir, const std::string& n
             std::istringstream fields(line);
             double t = 0;
             if (!(fields >> t)) continue;
+            // A run killed while appending can leave a torn last row, whose cut time
+            // may read as an earlier one: only whole rows are kept.
+            const auto nFields = static_cast<std::size_t>(std::count(line.begin(), line.end(), '\t')) + 1;
+            if (nFields != nColumns_) continue;
             if (t <= restartTime * (1 + 1e-12) + 1e-300) kept.push_back(line);
         }
     }

@@ -108,7 +108,13 @@ void writeXml(const fs::path& file, Data* data)
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();
         writer->SetCompressorTypeToZLib();
-        return writer->Write() == 1;
+        // A failed write (disk full, permissions) is reported by writeViaTemporary in
+        // one line; VTK's own error messages would add several more to stderr.
+        const int warnings = vtkObject::GetGlobalWarningDisplay();
+        vtkObject::GlobalWarningDisplayOff();
+        const bool written = writer->Write() == 1;
+        vtkObject::SetGlobalWarningDisplay(warnings);
+        return written;
     });
 }
 

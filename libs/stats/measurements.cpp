@@ -1,6 +1,7 @@
 #include "stats/measurements.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
@@ -81,9 +82,13 @@ Specimen readSpecimen(const std::string& id, const Dictionary& specimenDict,
     const std::optional<double> load = quantity(specimenDict, "failureLoad", "N");
     if (load)
         specimen.failureLoad = *load;
-    else if (specimen.curve)  // the peak of the curve
+    else if (specimen.curve) {  // the peak of the curve
         specimen.failureLoad = *std::max_element(specimen.curve->force.begin(), specimen.curve->force.end());
-    else
+        if (!(specimen.failureLoad > 0.0))  // found by fuzzing: a zero load broke the statistics
+            throw UserError(specimen.curve->file.string() +
+                            ": the force never rises above 0 N, so specimen '" + specimen.id +
+                            "' has no failure load; check the curve or give 'failureLoad [N] <value>;'");
+    } else
         throw UserError(specimenDict.endLocation().str() + ": specimen '" + specimen.id +
                         "' has no failureLoad; give 'failureLoad [N] <value>;' or a 'curve \"file.dat\";'");
     return specimen;
@@ -100,17 +105,25 @@ ForceDisplacementCurve readForceDisplacementCurve(const fs::path& path)
         throw UserError(path.string() +
                         ": no data rows under the header; expected one row per measured point");
     ForceDisplacementCurve curve{path, series.values("displacement"), series.values("force")};
-    for (std::size_t i = 0; i < curve.force.size(); ++i)
+    for (std::size_t i = 0; i < curve.force.size(); ++i) {
+        if (!std::isfinite(curve.force[i]) || !std::isfinite(curve.displacement[i]))
+            throw UserError(path.string() + ": a value in data row " + std::to_string(i + 1) +
+                            " is not a finite number; correct the row");
         if (curve.force[i] < 0.0)
             throw UserError(path.string() + ": negative force " + formatNumber(curve.force[i]) +
                             " N in data row " + std::to_string(i + 1) +
                             "; compressive loads are positive (remove the load cell offset)");
+    }
     return curve;
 }
 
 MeasurementSet readMeasurements(const fs::path& path)
 {
-    const Dictionary dict = Dictionary::readFile(path);
+    return readMeasurements(Dictionary::readFile(path), path);
+}
+
+MeasurementSet readMeasurements(const Dictionary& dict, const fs::path& path)
+{
     MeasurementSet set;
     set.file = path;
     set.test = dict.getOrDefault<std::string>("test", "");

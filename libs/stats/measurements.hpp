@@ -10,6 +10,10 @@
 
 #include "stats/descriptive.hpp"
 
+namespace rockfrac {
+class Dictionary;
+}
+
 namespace rockfrac::stats {
 
 struct SpecimenGeometry {
@@ -50,6 +54,9 @@ struct MeasurementSet {
 // dimension set, no specimens, or a curve file that is empty, lacks a column,
 // has a wrong unit or a negative force.
 MeasurementSet readMeasurements(const std::filesystem::path& path);
+// The same for a dictionary already parsed from `path` (curve files are read
+// relative to its directory); the measurements fuzz target calls this.
+MeasurementSet readMeasurements(const Dictionary& dict, const std::filesystem::path& path);
 
 // Read a force–displacement curve: columns `displacement [m]` and `force [N]`.
 ForceDisplacementCurve readForceDisplacementCurve(const std::filesystem::path& path);

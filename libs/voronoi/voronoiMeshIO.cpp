@@ -662,6 +662,11 @@ void checkArraySizes(const VoronoiMesh& m)
 
 }  // namespace
 
+std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size)
+{
+    return checksum(data, size);
+}
+
 void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 {
     checkArraySizes(mesh);
@@ -698,6 +703,12 @@ void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 
     const std::string text = meshInfoText(info);  // last: it vouches for the others
     writeAtomically(dir / "meshInfo", displayName(caseDir, "meshInfo"), text.data(), text.size());
+}
+
+VoronoiMeshSizes readVoronoiMeshSizes(const fs::path& caseDir)
+{
+    const MeshInfo info = readMeshInfo(caseDir);
+    return {info.nCells, info.nVertices, info.nFaces, info.nFaceVertices, info.nBondedFaces, info.nBonds};
 }
 
 VoronoiMesh readVoronoiMesh(const fs::path& caseDir)

@@ -5,6 +5,8 @@
 // (docs/file-formats.md). Bonds are stored as the bonded face
 // pairs; their geometry is rebuilt on reading by the same function the
 // tessellation uses, so a read mesh is bit-identical to the written one.
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 
 #include "voronoi/voronoiMesh.hpp"
@@ -24,5 +26,18 @@ void writeVoronoiMesh(const std::filesystem::path& caseDir, const VoronoiMesh& m
 // truncated, corrupt or inconsistent file gives a UserError naming the file
 // and what is wrong; it never crashes or allocates more than the files hold.
 VoronoiMesh readVoronoiMesh(const std::filesystem::path& caseDir);
+
+// The sizes meshInfo announces, read and checked as readVoronoiMesh does but
+// without the binary files: what a solver needs to estimate its memory before
+// reading the mesh (core/memoryLimit.hpp).
+struct VoronoiMeshSizes {
+    std::uint64_t nCells = 0, nVertices = 0, nFaces = 0, nFaceVertices = 0, nBondedFaces = 0, nBonds = 0;
+};
+VoronoiMeshSizes readVoronoiMeshSizes(const std::filesystem::path& caseDir);
+
+// The payload checksum recorded in each binary file's header and in meshInfo
+// (docs/file-formats.md). Public so that the fuzz target (tests/fuzz/voronoiMesh)
+// can make mutated payloads pass it and reach the decoders behind it.
+std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size);
 
 }  // namespace rockfrac

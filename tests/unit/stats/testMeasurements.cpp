@@ -100,6 +100,16 @@ TEST_CASE("a wrong measurements file gives one clear error each", "[stats]")
         const fs::path file = setWithCurve("negativeCurve", "# displacement [m]\tforce [N]\n0\t-50\n");
         CHECK_THROWS_WITH(readMeasurements(file), Contains("S1.dat") && Contains("negative force"));
     }
+    SECTION("a curve that never rises above zero (found by fuzzing: failure load 0)")
+    {
+        const fs::path file = setWithCurve("zeroPeak", "# displacement [m]\tforce [N]\n0\t0\n1e-5\t0\n");
+        CHECK_THROWS_WITH(readMeasurements(file), Contains("S1.dat") && Contains("never rises above 0 N"));
+    }
+    SECTION("a curve with an infinite force")
+    {
+        const fs::path file = setWithCurve("infinite", "# displacement [m]\tforce [N]\n0\t0\n1e-5\tinf\n");
+        CHECK_THROWS_WITH(readMeasurements(file), Contains("S1.dat") && Contains("not a finite number"));
+    }
     SECTION("a negative failure load")
     {
         const fs::path dir = scratch("negativeLoad");

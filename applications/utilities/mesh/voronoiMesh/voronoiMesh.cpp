@@ -117,8 +117,14 @@ int main(int argc, char** argv)
         std::printf("Seeding %d cells, pruning distance %.4g mm, seed %llu, domain volume %.6g m^3\n",
                     request.nCells, 1e3 * request.pruningDistance,
                     static_cast<unsigned long long>(request.seed), domain.volume());
-        const VoronoiMesh mesh = generateVoronoiMesh(domain, request.nCells, request.pruningDistance,
-                                                     request.seed, request.dilationFraction);
+        const VoronoiMesh mesh = [&] {
+            try {
+                return generateVoronoiMesh(domain, request.nCells, request.pruningDistance, request.seed,
+                                           request.dilationFraction);
+            } catch (const UserError& e) {  // the settings that cannot be met are in this file
+                throw UserError(dict.fileName() + ": " + e.what());
+            }
+        }();
         double volume = 0;
         for (double v : mesh.volumes) volume += v;
         const double volumeError = (volume - domain.volume()) / domain.volume();

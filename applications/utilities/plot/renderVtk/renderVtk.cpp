@@ -82,12 +82,18 @@ vtkSmartPointer<vtkDataSet> readDataSet(const fs::path& file)
 int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
-        if (!std::getenv("DISPLAY"))
-            throw UserError("no X display to render on; run it as 'xvfb-run -a renderVtk ...' (package xvfb)");
+        // The input first: a missing or broken file is the message that helps, with or
+        // without a display. VTK's own warnings would add lines to the one-line error.
+        vtkObject::GlobalWarningDisplayOff();
         const fs::path input = app.path(app.args()[0]);
         vtkSmartPointer<vtkDataSet> data = readDataSet(input);
-        if (data->GetNumberOfCells() == 0) throw UserError("'" + input.string() + "' has no cells to render");
-        const fs::path out = app.optionIf("-out") ? app.path(*app.optionIf("-out")) : fs::path(input).replace_extension(".png");
+        if (!data || data->GetNumberOfCells() == 0)
+            throw UserError("'" + input.string() + "' has no cells to render (empty or not a VTK XML file)");
+        if (!std::getenv("DISPLAY"))
+            throw UserError(
+                "no X display to render on; run it as 'xvfb-run -a renderVtk ...' (package xvfb)");
+        const fs::path out = app.optionIf("-out") ? app.path(*app.optionIf("-out"))
+                                                  : fs::path(input).replace_extension(".png");
 
         vtkNew<vtkDataSetSurfaceFilter> surface;
         surface->SetInputData(data);

@@ -1,0 +1,256 @@
+# The bad-input catalogue, sourced by runCatalogue.sh. One case per badCase:
+#   badCase <name> <base> <what the message names> <expected fragment> <command...> <<'SETUP'
+#   <bash run inside a copy of the base to break it>
+#   SETUP
+# Bases (runCatalogue.sh, prepareBases): disc (pristine BDT granite tutorial),
+# meshed (after meshRock), dem (after voronoiMesh, 60 cells), demRun (after a
+# 20-step bondedDemFoam run), fem (BDT graniteFEM after meshRock), femNoMesh,
+# empty, lab (measurements + a plateForce.dat), crusher (CH660 geometry).
+
+# A meshRockDict that reads constant/triSurface/rock.stl.
+stlDict='mkdir -p constant/triSurface; cat > system/meshRockDict <<D
+FoamFile { format ascii; class dictionary; object meshRockDict; }
+geometry stl;
+stl { file "constant/triSurface/rock.stl"; scale 1e-3; }
+D'
+# An ASCII STL facet: facet <x y z> <x y z> <x y z>
+facetFn='facet() { printf "facet normal 0 0 0\nouter loop\nvertex %s\nvertex %s\nvertex %s\nendloop\nendfacet\n" "$1" "$2" "$3"; }'
+
+# ---- meshRock: dictionaries ---------------------------------------------------------
+badCase noCaseDir empty "nowhere" "does not exist" meshRock -case nowhere <<'SETUP'
+SETUP
+badCase unknownOption disc "-frobnicate" "unknown option" meshRock -case . -frobnicate <<'SETUP'
+SETUP
+badCase noMeshRockDict disc "meshRockDict" "" meshRock -case . <<'SETUP'
+rm system/meshRockDict
+SETUP
+badCase missingSemicolon disc "meshRockDict" "" meshRock -case . <<'SETUP'
+sed -i 's/^geometry *disc;/geometry disc/' system/meshRockDict
+SETUP
+badCase unclosedBrace disc "meshRockDict" "" meshRock -case . <<'SETUP'
+sed -i '/nSegments/{n;d}' system/meshRockDict
+SETUP
+badCase missingInclude disc "noSuchFile" "" meshRock -case . <<'SETUP'
+echo '#include "noSuchFile"' >> system/meshRockDict
+SETUP
+badCase negativeDiameter disc "meshRockDict" "diameter" meshRock -case . <<'SETUP'
+caseDict -case . system/meshRockDict -entry disc/diameter -set -44.8e-3
+SETUP
+badCase diameterWrongUnits disc "meshRockDict" "diameter" meshRock -case . <<'SETUP'
+caseDict -case . system/meshRockDict -entry disc/diameter -set "[kg] 44.8e-3"
+SETUP
+badCase diameterNotANumber disc "meshRockDict" "diameter" meshRock -case . <<'SETUP'
+caseDict -case . system/meshRockDict -entry disc/diameter -set big
+SETUP
+badCase unknownGeometry disc "meshRockDict" "sphere" meshRock -case . <<'SETUP'
+caseDict -case . system/meshRockDict -entry geometry -set sphere
+SETUP
+
+# ---- meshRock: STL scans --------------------------------------------------------------
+badCase stlMissing disc "rock.stl" "" meshRock -case . <<SETUP
+$stlDict
+SETUP
+badCase stlEmpty disc "rock.stl" "empty" meshRock -case . <<SETUP
+$stlDict
+: > constant/triSurface/rock.stl
+SETUP
+badCase stlGarbage disc "rock.stl" "" meshRock -case . <<SETUP
+$stlDict
+echo "this is not an stl" > constant/triSurface/rock.stl
+SETUP
+badCase stlHole disc "rock.stl" "not a closed surface" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid hole"; facet "0 0 0" "0 1 0" "1 0 0"; facet "0 0 0" "1 0 0" "0 0 1"; facet "1 0 0" "0 1 0" "0 0 1"; echo "endsolid hole"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlNaN disc "rock.stl" "non-finite" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid nan"; facet "0 0 0" "0 1 0" "1 0 0"; facet "0 0 0" "1 0 0" "0 0 nan"; facet "1 0 0" "0 1 0" "0 0 1"; facet "0 0 0" "0 0 1" "0 1 0"; echo "endsolid nan"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlTruncatedBinary disc "rock.stl" "truncated" meshRock -case . <<SETUP
+$stlDict
+{ head -c 80 /dev/zero; printf '\x0c\x00\x00\x00'; head -c 100 /dev/zero; } > constant/triSurface/rock.stl
+SETUP
+badCase stlFourVertices disc "rock.stl" "" meshRock -case . <<SETUP
+$stlDict
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid x\n' > constant/triSurface/rock.stl
+SETUP
+
+# ---- voronoiMesh ----------------------------------------------------------------------
+badCase voronoiBeforeMeshRock disc "geometryProperties" "run meshRock first" voronoiMesh -case . <<'SETUP'
+SETUP
+badCase oneCell meshed "voronoiMeshDict" "at least 2 cells" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry nCells -set 1
+SETUP
+badCase fractionalCells meshed "voronoiMeshDict" "nCells" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry nCells -set 300.5
+SETUP
+badCase pruningTooLarge meshed "voronoiMeshDict" "pruning distance" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry nCells -set 5000
+caseDict -case . system/voronoiMeshDict -entry pruningDistance -set 3.5e-3
+SETUP
+badCase geometryPropertiesTruncated meshed "geometryProperties" "" voronoiMesh -case . <<'SETUP'
+head -c 300 constant/geometryProperties > g && mv g constant/geometryProperties
+SETUP
+
+# ---- bondedDemFoam: dictionaries ----------------------------------------------------------
+badCase demBeforeVoronoi meshed "voronoiMesh" "run voronoiMesh first" bondedDemFoam -case . <<'SETUP'
+SETUP
+badCase contactModelTypo dem "rockProperties" "hertzMindlin" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry contact/model -set hertzMindlinn
+SETUP
+badCase negativeStrength dem "rockProperties" "tensileStrength" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/tensileStrength -set -28e6
+SETUP
+badCase poissonHalf dem "rockProperties" "poissonRatio" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry rock/poissonRatio -set 0.5
+SETUP
+badCase modulusInMetres dem "rockProperties" "E" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/E -set "[0 1 0 0 0 0 0] 46e9"
+SETUP
+badCase emptyRockProperties dem "rockProperties" "" bondedDemFoam -case . <<'SETUP'
+: > constant/rockProperties
+SETUP
+badCase platesAtRest dem "loading" "stop criterion can never be met" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/loading -entry plates/upper/velocity -set "(0 0 0)"
+SETUP
+badCase velocityScalar dem "loading" "velocity" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/loading -entry plates/upper/velocity -set -0.25
+SETUP
+badCase twoTimeSteps dem "controlDict" "exactly one" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry rayleighFraction -add 0.02
+SETUP
+badCase unstableStep dem "controlDict" "largest stable step" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry deltaT -set 1e-4
+SETUP
+badCase unknownWriteControl dem "controlDict" "writeControl" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry writeControl -set everyNowAndThen
+SETUP
+badCase startTimeWithoutDir dem "controlDict" "has no time directory" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry startFrom -set startTime
+caseDict -case . system/controlDict -entry startTime -set 1e-3
+SETUP
+badCase endBeforeStart demRun "controlDict" "raise endTime" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 1e-6
+SETUP
+badCase demMemoryLimit dem "meshInfo" "estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 bondedDemFoam -case . <<'SETUP'
+SETUP
+badCase memoryLimitNotANumber dem "ROCKFRAC_MEMORY_LIMIT_BYTES" "not a number" env ROCKFRAC_MEMORY_LIMIT_BYTES=8GB bondedDemFoam -case . <<'SETUP'
+SETUP
+
+# ---- bondedDemFoam: corrupt mesh and state files ---------------------------------------------
+badCase meshInfoTruncated dem "meshInfo" "voronoiMesh" bondedDemFoam -case . <<'SETUP'
+head -c 400 constant/voronoiMesh/meshInfo > m && mv m constant/voronoiMesh/meshInfo
+SETUP
+badCase meshInfoHugeCount dem "meshInfo" "" bondedDemFoam -case . <<'SETUP'
+sed -i 's/^nCells .*/nCells          2000000000;/' constant/voronoiMesh/meshInfo
+SETUP
+badCase cellsTruncated dem "cells" "truncated" bondedDemFoam -case . <<'SETUP'
+head -c 1000 constant/voronoiMesh/cells > c && mv c constant/voronoiMesh/cells
+SETUP
+badCase facesMissing dem "faces" "run voronoiMesh first" bondedDemFoam -case . <<'SETUP'
+rm constant/voronoiMesh/faces
+SETUP
+badCase bondsBitFlip dem "bonds" "checksum" bondedDemFoam -case . <<'SETUP'
+printf '\x7f' | dd of=constant/voronoiMesh/bonds bs=1 seek=70 conv=notrunc status=none
+SETUP
+badCase verticesFromOtherMesh dem "vertices" "" bondedDemFoam -case . <<'SETUP'
+cp ../../bases/meshed/constant/geometryProperties constant/voronoiMesh/vertices
+SETUP
+badCase stateTruncated demRun "demState" "restart from an earlier time directory" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 4e-6
+latest=$(ls -d [0-9]* | sort -g | tail -1)
+head -c 2000 "$latest/demState" > s && mv s "$latest/demState"
+SETUP
+badCase stateGarbage demRun "demState" "not a rockfrac state file" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 4e-6
+latest=$(ls -d [0-9]* | sort -g | tail -1)
+echo "garbage" > "$latest/demState"
+SETUP
+badCase stateOfFemSolver demRun "demState" "" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 4e-6
+latest=$(ls -d [0-9]* | sort -g | tail -1)
+python3 -c "
+import struct
+b = b'RFSTATE\0' + struct.pack('<II', 1, 0)
+h = 0xcbf29ce484222325
+for x in b: h = ((h ^ x) * 0x100000001b3) & 0xffffffffffffffff
+open('$latest/demState', 'wb').write(b + struct.pack('<Q', h))"
+SETUP
+
+# ---- feFractureSolver ----------------------------------------------------------------
+badCase femBeforeMeshRock femNoMesh "specimen.msh" "run meshRock" feFractureSolver -case . <<'SETUP'
+SETUP
+badCase femMaterialTypo fem "rockProperties" "kstDfh" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry material -set kstDFH
+SETUP
+badCase weibullModulusZero fem "rockProperties" "weibullModulus" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry dfh/weibullModulus -set 0
+SETUP
+badCase plateNeverTouches fem "loading" "never touches the specimen" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/loading -entry plates/startGap -set 1
+SETUP
+badCase mshTruncated fem "specimen.msh" "" feFractureSolver -case . <<'SETUP'
+head -c 2000 constant/feMesh/specimen.msh > m && mv m constant/feMesh/specimen.msh
+SETUP
+badCase mshEmpty fem "specimen.msh" "" feFractureSolver -case . <<'SETUP'
+: > constant/feMesh/specimen.msh
+SETUP
+badCase femMemoryLimit fem "specimen.msh" "estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 feFractureSolver -case . <<'SETUP'
+SETUP
+
+# ---- caseDict ---------------------------------------------------------------------------
+badCase caseDictNoFile disc "constant/nothing" "" caseDict -case . constant/nothing <<'SETUP'
+SETUP
+badCase caseDictNoEntry disc "rockProperties" "tensileStrenght" caseDict -case . constant/rockProperties -entry bond/tensileStrenght -value <<'SETUP'
+SETUP
+badCase caseDictSetInBroken disc "rockProperties" "" caseDict -case . constant/rockProperties -entry bond/E -set 1 <<'SETUP'
+echo "bond { E 46e9" >> constant/rockProperties
+SETUP
+
+# ---- measured data and plots -------------------------------------------------------------
+badCase plotCdfNoMeasurements lab "nothing" "" plotCdf -case . -measured nothing <<'SETUP'
+SETUP
+badCase measurementsEmpty lab "measurements" "" plotCdf -case . -measured measurements <<'SETUP'
+: > measurements
+SETUP
+badCase measurementsNoSpecimens lab "measurements" "no specimens" plotCdf -case . -measured measurements <<'SETUP'
+printf 'FoamFile { format ascii; class dictionary; object measurements; }\nspecimens { }\n' > measurements
+SETUP
+badCase measurementsNoUnit lab "measurements" "dimension set" plotCdf -case . -measured measurements <<'SETUP'
+sed -i 's/failureLoad \[N\] 10.9e3/failureLoad 10.9e3/' measurements
+SETUP
+badCase measurementsKiloNewton lab "measurements" "failureLoad" plotCdf -case . -measured measurements <<'SETUP'
+sed -i 's/failureLoad \[N\] 10.9e3/failureLoad [kg m^2 s^-2] 10.9/' measurements
+SETUP
+badCase curveEmpty lab "empty.dat" "" plotCdf -case . -measured measurements <<'SETUP'
+: > empty.dat
+sed -i 's/failureLoad \[N\] 10.9e3;/curve "empty.dat";/' measurements
+SETUP
+badCase plotEmptyDat lab "plateForce.dat" "" plotTimeSeries -case . -y force plateForce.dat <<'SETUP'
+: > plateForce.dat
+SETUP
+badCase plotNoColumn lab "plateForce.dat" "stress" plotTimeSeries -case . -y stress plateForce.dat <<'SETUP'
+SETUP
+badCase plotBadRow lab "plateForce.dat" "" plotTimeSeries -case . -y force plateForce.dat <<'SETUP'
+printf '1e-5\tforty-two\n' >> plateForce.dat
+SETUP
+
+# ---- fragments, crusher, rendering, studies ----------------------------------------------------
+badCase psdNoState dem "" "demState" fragmentPSD -case . <<'SETUP'
+SETUP
+badCase psdNoSuchTime demRun "7" "" fragmentPSD -case . -time 7 <<'SETUP'
+SETUP
+badCase crusherNoDict crusher "meshCrusherDict" "" meshCrusher -case . <<'SETUP'
+rm system/meshCrusherDict
+SETUP
+badCase renderNoFile dem "VTK/none.vtu" "" renderVtk -case . VTK/none.vtu <<'SETUP'
+SETUP
+badCase renderNotVtk dem "VTK/broken.vtu" "" renderVtk -case . VTK/broken.vtu <<'SETUP'
+echo "<VTKFile" > VTK/broken.vtu
+SETUP
+badCase runCasesNoDict empty "runCasesDict" "" runCases -case . <<'SETUP'
+SETUP
+badCase calibrateNoDict empty "calibrationDict" "" calibrateModel -case . <<'SETUP'
+SETUP

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# bondedDemFoam interrupted: SIGTERM (exit 143) and SIGINT (exit 130) write the
+# state at the current step as a complete time directory, and `startFrom
+# latestTime` continues to a plateForce.dat bitwise identical to the
+# uninterrupted run's; SIGKILL at random moments leaves only complete time
+# directories and the continuation is still bitwise identical.
+source "$(dirname "$0")/../caseTestFunctions"
+source "$(dirname "$0")/interruptFunctions"
+solver=bondedDemFoam state=demState base="$work/base"
+copyTutorial tutorials/BDT/granite "$base"
+(cd "$base" && meshRock > log.meshRock 2>&1 && voronoiMesh > log.voronoiMesh 2>&1) || fail "meshing failed"
+caseDict -case "$base" system/controlDict -entry endTime -set 6e-4 > /dev/null   # 6000 steps
+caseDict -case "$base" system/controlDict -entry writeInterval -set 5e-5 > /dev/null
+reference
+interruptWith TERM 143
+interruptWith INT 130
+killRepeatedly 4
