@@ -393,19 +393,10 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
     return s;
 }
 
-// +1 when the cell's centre lies on the side the surface's winding normals point to,
-// -1 otherwise: the side every triangle is seen from for this item.
-RF_HD inline double surfaceSide(const WallKernelArgs& a, const WallPose& wall, int item, const Vec3& centre,
-                                double tolerance)
-{
-    const SurfaceNearest s = nearestOnSurface(a, wall, item, centre, tolerance);
-    return dot(centre - s.point, s.pseudo_normal) < 0.0 ? -1.0 : 1.0;
-}
-
 // Triangulated surface, when no core vertex is near it: GJK between the core and each
 // candidate triangle; the nearest triangle makes the contact (one contact per cell and
 // surface). `side` (+1 or -1) turns the triangles' winding normals to the cell's side
-// (see surfaceSide). A triangle reported as cutting the core must come within the
+// (from the nearest point to the cell's centre, see wallKernel). A triangle reported as cutting the core must come within the
 // core's reach of its centre (a necessary condition that rejects a false intersection
 // of GJK on a degenerate simplex, which would otherwise give the whole depth of the
 // core below the triangle's infinite plane).
@@ -445,7 +436,7 @@ RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const C
 // Triangulated surface: the signed distance of the vertex to the surface, from its
 // nearest point over all candidate triangles and the pseudo-normal there (so a vertex
 // over a shared edge counts once, and a vertex beside a triangle is never judged by
-// that triangle's infinite plane). side (+1/-1, surfaceSide) tells which side of the
+// that triangle's infinite plane). side (+1/-1, see wallKernel) tells which side of the
 // winding the cell is on. A vertex behind the surface (its nearest point on a face or
 // an inner edge or vertex) overlaps by r_d + distance, pushed back towards that point;
 // at an open rim the surface has no inside and the rim is an edge seen from both sides.
@@ -492,8 +483,14 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     const double radius = a.cells.dilation_radius[c];
     PatchPoint points[max_patch_points];
     bool cores_intersect = false;
-    const double side =
-        wall.kind == wallTriSurface ? surfaceSide(a, wall, item, core.position, 1e-7 * radius) : 1.0;
+    double side = 1.0;
+    if (wall.kind == wallTriSurface) {
+        // The nearest point of the surface to the centre gives the cell's side; when it is
+        // farther than the dilated core reaches (bounding radius), nothing can touch.
+        const SurfaceNearest s = nearestOnSurface(a, wall, item, core.position, 1e-7 * radius);
+        if (s.distance > a.cells.bounding_radius[c]) return clearItem(a.items, item);
+        side = dot(core.position - s.point, s.pseudo_normal) < 0.0 ? -1.0 : 1.0;
+    }
     int n = wallPatch(a, core, radius, side, wall, item, points, cores_intersect);
     if (n == 0 && wall.kind == wallTriSurface) {
         // No core vertex near the surface, but a triangle edge or corner may reach into
