@@ -311,8 +311,9 @@ RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec
             return s0 + t * d;
         };
         Vec3 best = onSegment(a, b);
-        for (const Vec3& q : {onSegment(b, c), onSegment(c, a)})
-            if (norm2(q - p) < norm2(best - p)) best = q;
+        const Vec3 q1 = onSegment(b, c), q2 = onSegment(c, a);
+        if (norm2(q1 - p) < norm2(best - p)) best = q1;
+        if (norm2(q2 - p) < norm2(best - p)) best = q2;
         return best;
     }
     feature = featureFace;
@@ -396,10 +397,10 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
 // Triangulated surface, when no core vertex is near it: GJK between the core and each
 // candidate triangle; the nearest triangle makes the contact (one contact per cell and
 // surface). `side` (+1 or -1) turns the triangles' winding normals to the cell's side
-// (from the nearest point to the cell's centre, see wallKernel). A triangle reported as cutting the core must come within the
-// core's reach of its centre (a necessary condition that rejects a false intersection
-// of GJK on a degenerate simplex, which would otherwise give the whole depth of the
-// core below the triangle's infinite plane).
+// (from the nearest point to the cell's centre, see wallKernel). A triangle reported as
+// cutting the core must come within the core's reach of its centre (a necessary
+// condition that rejects a false intersection of GJK on a degenerate simplex, which
+// would otherwise give the whole depth of the core below the triangle's infinite plane).
 RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
                                                 double radius, double core_reach, double side,
                                                 const WallPose& wall, int item)
