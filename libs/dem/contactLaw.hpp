@@ -256,29 +256,6 @@ struct WallKernelArgs {
     double* wall_power = nullptr;  // force on the cell . wall velocity at the contact [W]
 };
 
-// Triangulated surface: GJK between the core and each candidate triangle; the
-// nearest triangle makes the contact (one contact per cell and surface).
-RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
-                                                double radius, const WallPose& wall, int item)
-{
-    ContactGeometry best;
-    best.overlap = -1e300;
-    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
-        ConvexVertexSet triangle;
-        triangle.vertices = a.triangle_vertices + 3 * a.item_triangles[e];
-        triangle.n_vertices = 3;
-        triangle.position = wall.origin;
-        triangle.rotation = wall.rotation;
-        // The triangle's own normal, turned toward the cell, when the core cuts it.
-        const Vec3 v0 = worldVertex(triangle, 0);
-        Vec3 face_normal = normalised(cross(worldVertex(triangle, 1) - v0, worldVertex(triangle, 2) - v0));
-        if (dot(core.position - v0, face_normal) < 0.0) face_normal = -face_normal;
-        const ContactGeometry g = coreGeometry(triangle, core, 0.0, radius, face_normal);
-        if (g.overlap > best.overlap) best = g;
-    }
-    return best;
-}
-
 // Add a point to a patch; when full, the shallowest point gives way to a deeper one.
 RF_HD inline void addPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
 {
@@ -297,80 +274,199 @@ RF_HD inline Vec3 wallPointVelocity(const WallPose& wall, const Vec3& point)
     return wall.velocity + cross(wall.angular_velocity, point - wall.origin);
 }
 
-// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
-RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+// Which part of a triangle holds the closest point.
+enum TriangleFeature : int { featureFace = 0, featureEdge = 1, featureVertex = 2 };
+
+// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5);
+// feature receives where it lies, vertex the corner (0, 1, 2) for featureVertex. A
+// degenerate (zero-area) triangle gives the nearest point of its edges.
+RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c,
+                                         int& feature, int& vertex)
 {
+    feature = featureVertex;
     const Vec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    if (d1 <= 0.0 && d2 <= 0.0) return vertex = 0, a;
     const Vec3 bp = p - b;
     const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) return b;
+    if (d3 >= 0.0 && d4 <= d3) return vertex = 1, b;
+    feature = featureEdge;
     const double vc = d1 * d4 - d3 * d2;
     if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
     const Vec3 cp = p - c;
     const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) return c;
+    if (d6 >= 0.0 && d5 <= d6) return feature = featureVertex, vertex = 2, c;
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
     const double va = d3 * d6 - d5 * d4;
     if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
         return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-    const double denominator = 1.0 / (va + vb + vc);
+    const double sum = va + vb + vc;
+    if (!(sum > 0.0)) {  // zero area: nearest point of the three edges
+        auto onSegment = [&](const Vec3& s0, const Vec3& s1) {
+            const Vec3 d = s1 - s0;
+            const double l2 = norm2(d);
+            double t = l2 > 0.0 ? dot(p - s0, d) / l2 : 0.0;
+            t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+            return s0 + t * d;
+        };
+        Vec3 best = onSegment(a, b);
+        const Vec3 q1 = onSegment(b, c), q2 = onSegment(c, a);
+        if (norm2(q1 - p) < norm2(best - p)) best = q1;
+        if (norm2(q2 - p) < norm2(best - p)) best = q2;
+        return best;
+    }
+    feature = featureFace;
+    const double denominator = 1.0 / sum;
     return a + (vb * denominator) * ab + (vc * denominator) * ac;
+}
+
+RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    int feature = 0, vertex = 0;
+    return closestPointOnTriangle(p, a, b, c, feature, vertex);
+}
+
+// The nearest point of a triangulated surface (the candidate triangles of an item) to x,
+// with the pseudo-normal of the feature it lies on (Baerentzen & Aanaes 2005): the face
+// normal for a face point, the sum of the two face normals for an edge, the angle-weighted
+// sum for a vertex, all from the triangles' winding (a consistently oriented surface).
+// boundary: the point lies on an edge of one triangle only or a vertex whose angles do
+// not close around it (an open rim), where the surface has no inside.
+struct SurfaceNearest {
+    Vec3 point;
+    Vec3 pseudo_normal;  // unnormalised, winding orientation
+    double distance = 1e300;
+    bool boundary = false;
+};
+
+RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const WallPose& wall, int item,
+                                             const Vec3& x, double tolerance)
+{
+    SurfaceNearest s;
+    Vec3 face, edges, corners;
+    int n_faces = 0, n_edges = 0, n_corners = 0;
+    double corner_angle = 0.0;
+    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
+        const Vec3* t = a.triangle_vertices + 3 * a.item_triangles[e];
+        const Vec3 p[3] = {wall.origin + wall.rotation * t[0], wall.origin + wall.rotation * t[1],
+                           wall.origin + wall.rotation * t[2]};
+        int feature = 0, vertex = 0;
+        const Vec3 q = closestPointOnTriangle(x, p[0], p[1], p[2], feature, vertex);
+        const double distance = norm(x - q);
+        if (distance > s.distance + tolerance) continue;
+        if (distance < s.distance - tolerance) {  // a new nearest feature: restart the sums
+            face = edges = corners = Vec3{};
+            n_faces = n_edges = n_corners = 0;
+            corner_angle = 0.0;
+        }
+        if (distance < s.distance) {
+            s.distance = distance;
+            s.point = q;
+        }
+        const Vec3 area_normal = cross(p[1] - p[0], p[2] - p[0]);
+        if (!(norm2(area_normal) > 0.0)) continue;  // zero area: no normal of its own
+        const Vec3 n = normalised(area_normal);
+        if (feature == featureFace) {
+            face += n;
+            ++n_faces;
+        } else if (feature == featureEdge) {
+            edges += n;
+            ++n_edges;
+        } else {
+            const Vec3 u = p[(vertex + 1) % 3] - p[vertex], v = p[(vertex + 2) % 3] - p[vertex];
+            const double angle = std::atan2(norm(cross(u, v)), dot(u, v));
+            corners += angle * n;
+            corner_angle += angle;
+            ++n_corners;
+        }
+    }
+    constexpr double pi = 3.14159265358979323846;
+    if (n_faces > 0) {
+        s.pseudo_normal = face;
+    } else if (n_corners > 0) {
+        s.pseudo_normal = corners;
+        s.boundary = corner_angle < 1.5 * pi;
+    } else {
+        s.pseudo_normal = edges;
+        s.boundary = n_edges < 2;
+    }
+    return s;
+}
+
+// Triangulated surface, when no core vertex is near it: GJK between the core and each
+// candidate triangle; the nearest triangle makes the contact (one contact per cell and
+// surface). `side` (+1 or -1) turns the triangles' winding normals to the cell's side
+// (from the nearest point to the cell's centre, see wallKernel). A triangle reported as
+// cutting the core must come within the core's reach of its centre (a necessary
+// condition that rejects a false intersection of GJK on a degenerate simplex, which
+// would otherwise give the whole depth of the core below the triangle's infinite plane).
+RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
+                                                double radius, double core_reach, double side,
+                                                const WallPose& wall, int item)
+{
+    ContactGeometry best;
+    best.overlap = -1e300;
+    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
+        ConvexVertexSet triangle;
+        triangle.vertices = a.triangle_vertices + 3 * a.item_triangles[e];
+        triangle.n_vertices = 3;
+        triangle.position = wall.origin;
+        triangle.rotation = wall.rotation;
+        const Vec3 v0 = worldVertex(triangle, 0), v1 = worldVertex(triangle, 1), v2 = worldVertex(triangle, 2);
+        const Vec3 area_normal = cross(v1 - v0, v2 - v0);
+        if (!(norm2(area_normal) > 0.0)) continue;  // zero area: its edges belong to neighbours
+        const Vec3 face_normal = side * normalised(area_normal);
+        const GjkResult gjk = gjkDistance(triangle, core, v0 - core.position);
+        ContactGeometry g;
+        if (gjk.intersecting || gjk.distance <= 1e-9 * radius) {
+            if (norm(closestPointOnTriangle(core.position, v0, v1, v2) - core.position) > core_reach) continue;
+            g = supportGeometry(triangle, core, face_normal, 0.0, radius);
+        } else {
+            g.normal = (gjk.point_b - gjk.point_a) / gjk.distance;
+            g.overlap = radius - gjk.distance;
+            g.point = 0.5 * (gjk.point_a + gjk.point_b - radius * g.normal);
+        }
+        if (g.overlap > best.overlap) best = g;
+    }
+    return best;
 }
 
 // The patch of a cell against a wall: every core vertex whose sphere (radius r_d)
 // overlaps the wall is a point. Plate: overlap r_d - signed distance of the vertex.
-// Triangulated surface: the nearest candidate triangle of each vertex (so a vertex
-// over a shared edge of a flat surface counts once); a vertex behind a triangle's
-// plane (core cutting the surface) takes the triangle's normal. Returns the number
-// of points; sets cores_intersect when a vertex is behind a triangle.
-RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, double radius,
+// Triangulated surface: the signed distance of the vertex to the surface, from its
+// nearest point over all candidate triangles and the pseudo-normal there (so a vertex
+// over a shared edge counts once, and a vertex beside a triangle is never judged by
+// that triangle's infinite plane). side (+1/-1, see wallKernel) tells which side of the
+// winding the cell is on. A vertex behind the surface (its nearest point on a face or
+// an inner edge or vertex) overlaps by r_d + distance, pushed back towards that point;
+// at an open rim the surface has no inside and the rim is an edge seen from both sides.
+// Returns the number of points; sets cores_intersect when a vertex is behind the surface.
+RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, double radius, double side,
                            const WallPose& wall, int item, PatchPoint* points, bool& cores_intersect)
 {
     int n = 0;
     cores_intersect = false;
+    const double tolerance = 1e-7 * radius;
     for (int v = 0; v < core.n_vertices; ++v) {
         const Vec3 x = worldVertex(core, v);
         PatchPoint p;
+        bool behind = false;
         if (wall.kind == wallPlate) {
             p.normal = wall.normal;
             p.overlap = radius - dot(x - wall.origin, wall.normal);
         } else {
-            double best = -1e300;
-            bool behind = false;
-            for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
-                const Vec3* t = a.triangle_vertices + 3 * a.item_triangles[e];
-                const Vec3 t0 = wall.origin + wall.rotation * t[0];
-                const Vec3 t1 = wall.origin + wall.rotation * t[1];
-                const Vec3 t2 = wall.origin + wall.rotation * t[2];
-                Vec3 face_normal = normalised(cross(t1 - t0, t2 - t0));
-                if (dot(core.position - t0, face_normal) < 0.0) face_normal = -face_normal;
-                const Vec3 q = closestPointOnTriangle(x, t0, t1, t2);
-                const Vec3 gap = x - q;
-                const double distance = norm(gap);
-                double overlap;
-                Vec3 normal;
-                bool cut = false;
-                if (dot(gap, face_normal) < 0.0) {  // behind the triangle's plane
-                    overlap = radius + distance;
-                    normal = face_normal;
-                    cut = true;
-                } else {
-                    overlap = radius - distance;
-                    normal = distance > 1e-12 * radius ? gap / distance : face_normal;
-                }
-                if (overlap > best) {
-                    best = overlap;
-                    p.normal = normal;
-                    behind = cut;
-                }
-            }
-            p.overlap = best;
-            if (p.overlap > 0.0 && behind) cores_intersect = true;
+            const SurfaceNearest s = nearestOnSurface(a, wall, item, x, tolerance);
+            const Vec3 gap = x - s.point;
+            behind = !s.boundary && side * dot(gap, s.pseudo_normal) < 0.0;
+            p.overlap = behind ? radius + s.distance : radius - s.distance;
+            if (s.distance > 1e-9 * radius)
+                p.normal = (behind ? -1.0 : 1.0) / s.distance * gap;
+            else
+                p.normal = side * normalised(s.pseudo_normal);
         }
         if (!(p.overlap > 0.0)) continue;
+        if (behind) cores_intersect = true;
         p.point = x - (radius - 0.5 * p.overlap) * p.normal;
         addPatchPoint(points, n, p);
     }
@@ -388,11 +484,20 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     const double radius = a.cells.dilation_radius[c];
     PatchPoint points[max_patch_points];
     bool cores_intersect = false;
-    int n = wallPatch(a, core, radius, wall, item, points, cores_intersect);
+    double side = 1.0;
+    if (wall.kind == wallTriSurface) {
+        // The nearest point of the surface to the centre gives the cell's side; when it is
+        // farther than the dilated core reaches (bounding radius), nothing can touch.
+        const SurfaceNearest s = nearestOnSurface(a, wall, item, core.position, 1e-7 * radius);
+        if (s.distance > a.cells.bounding_radius[c]) return clearItem(a.items, item);
+        side = dot(core.position - s.point, s.pseudo_normal) < 0.0 ? -1.0 : 1.0;
+    }
+    int n = wallPatch(a, core, radius, side, wall, item, points, cores_intersect);
     if (n == 0 && wall.kind == wallTriSurface) {
         // No core vertex near the surface, but a triangle edge or corner may reach into
         // a face or edge of the core: the single contact from GJK.
-        const ContactGeometry g = triSurfaceGeometry(a, core, radius, wall, item);
+        const ContactGeometry g =
+            triSurfaceGeometry(a, core, radius, a.cells.bounding_radius[c], side, wall, item);
         if (g.overlap > 0.0) {
             points[0].point = g.point;
             points[0].normal = g.normal;

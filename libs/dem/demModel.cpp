@@ -7,8 +7,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "core/parallel.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "dem/cellCore.hpp"
 
 namespace rockfrac {
@@ -73,6 +73,13 @@ std::size_t bytes(const std::vector<T>& v)
     return v.capacity() * sizeof(T);
 }
 
+void requireCount(std::size_t got, int expected)
+{
+    if (static_cast<int>(got) != expected)
+        throw UserError("removeCells: the mask has " + std::to_string(got) + " entries for " +
+                        std::to_string(expected) + " cells");
+}
+
 // Angle of the rotation between two orientations.
 double rotationAngle(const Quat& a, const Quat& b)
 {
@@ -105,6 +112,33 @@ std::string DemStatus::message() const
 
 DemModel::DemModel(const VoronoiMesh& mesh, const DemParameters& parameters) : parameters_(parameters)
 {
+    setUpLaws();
+    if (mesh.nCells() == 0) throw UserError("the Voronoi mesh has no cells");
+    const std::vector<Quat> mesh_orientation = appendCells(mesh, WallMotion{}, true);
+    appendBonds(mesh, 0, mesh_orientation);
+    buildIncidence();
+    shrinkToFit();
+    refreshKinematicCaches();
+    computeForces(0.0);
+    measureCells(0.0);
+    initial_balance_ = energies_.balance();
+}
+
+DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
+{
+    setUpLaws();
+    skin_ = parameters_.skin_distance;
+    interfaces_.bond_offset.assign(1, 0);
+    cells_.core_vertex_offset.assign(1, 0);
+    buildIncidence();
+    refreshKinematicCaches();
+    computeForces(0.0);
+    measureCells(0.0);
+    initial_balance_ = energies_.balance();
+}
+
+void DemModel::setUpLaws()
+{
     parameters_.validate();
     bond_runner_ = bondLawRunner(parameters_.bond_law);
     contact_runners_ = contactLawRunners(parameters_.contact_law);
@@ -115,22 +149,13 @@ DemModel::DemModel(const VoronoiMesh& mesh, const DemParameters& parameters) : p
     rock_steel_ = contactConstants(parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
                                    parameters_.steel_youngs_modulus, parameters_.steel_poisson_ratio,
                                    parameters_.rock_steel_friction, parameters_.rock_steel_restitution);
-    buildCells(mesh);
-    buildBonds(mesh);
-    buildIncidence();
-    shrinkToFit();
-    refreshKinematicCaches();
-    computeForces(0.0);
-    measureCells(0.0);
-    initial_balance_ = energies_.balance();
 }
 
 // ---- Construction -----------------------------------------------------------
 
-void DemModel::buildCells(const VoronoiMesh& mesh)
+std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotion& pose, bool identity)
 {
     const int n = mesh.nCells();
-    if (n == 0) throw UserError("the Voronoi mesh has no cells");
     if (static_cast<int>(mesh.centroids.size()) != n || static_cast<int>(mesh.inertia.size()) != n ||
         static_cast<int>(mesh.cellFaceOffset.size()) != n + 1 ||
         static_cast<int>(mesh.cellVertexOffset.size()) != n + 1)
@@ -140,47 +165,61 @@ void DemModel::buildCells(const VoronoiMesh& mesh)
         parameters_.dilation_radius > 0.0 ? parameters_.dilation_radius : mesh.dilationRadius;
     if (!(dilation > 0.0))
         throw UserError("the dilation radius is zero: set it in the mesh or the DEM parameters");
-    skin_ = parameters_.skin_distance > 0.0 ? parameters_.skin_distance : dilation;
+    if (!(skin_ > 0.0)) skin_ = parameters_.skin_distance > 0.0 ? parameters_.skin_distance : dilation;
 
     CellArrays& c = cells_;
-    c.position = mesh.centroids;
-    c.velocity.assign(n, Vec3{});
-    c.angular_velocity.assign(n, Vec3{});
-    c.orientation.resize(n);
-    c.force.assign(n, Vec3{});
-    c.torque.assign(n, Vec3{});
-    c.mass.resize(n);
-    c.principal_inertia.resize(n);
-    c.dilation_radius.assign(n, dilation);
-    c.bounding_radius.resize(n);
-    c.core_vertex_offset.assign(1, 0);
-    c.initial_bond_count.assign(n, 0);
-    double smallest_radius = 1e300;
-    for (int cell = 0; cell < n; ++cell) {
+    const int first = c.size();
+    const Mat3 pose_rotation = rotationMatrix(normalised(pose.orientation));
+    std::vector<Quat> mesh_orientation(n);
+    c.position.resize(first + n);
+    c.velocity.resize(first + n, Vec3{});
+    c.angular_velocity.resize(first + n, Vec3{});
+    c.orientation.resize(first + n);
+    c.force.resize(first + n, Vec3{});
+    c.torque.resize(first + n, Vec3{});
+    c.mass.resize(first + n);
+    c.principal_inertia.resize(first + n);
+    c.dilation_radius.resize(first + n, dilation);
+    c.bounding_radius.resize(first + n);
+    c.initial_bond_count.resize(first + n, 0);
+    if (c.core_vertex_offset.empty()) c.core_vertex_offset.assign(1, 0);
+    for (int local = 0; local < n; ++local) {
+        const int cell = first + local;
         const double density = parameters_.rock_density;
-        c.mass[cell] = density * mesh.volumes[cell];
-        smallest_radius = std::min(smallest_radius, std::cbrt(3.0 * mesh.volumes[cell] / (4.0 * pi)));
+        c.mass[cell] = density * mesh.volumes[local];
+        smallest_radius_ = std::min(smallest_radius_, std::cbrt(3.0 * mesh.volumes[local] / (4.0 * pi)));
         // Principal axes: the body frame is the eigenbasis of the inertia tensor.
         Eigen::Matrix3d inertia;
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) inertia(i, j) = density * mesh.inertia[cell](i, j);
+            for (int j = 0; j < 3; ++j) inertia(i, j) = density * mesh.inertia[local](i, j);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
         Eigen::Matrix3d axes = eigen.eigenvectors();
         if (axes.determinant() < 0.0) axes.col(2) *= -1.0;
-        Mat3 body_to_world;
+        Mat3 body_to_mesh;
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) body_to_world(i, j) = axes(i, j);
-        c.orientation[cell] = quatFromRotationMatrix(body_to_world);
-        const Mat3 R = rotationMatrix(c.orientation[cell]);
+            for (int j = 0; j < 3; ++j) body_to_mesh(i, j) = axes(i, j);
+        mesh_orientation[local] = quatFromRotationMatrix(body_to_mesh);
+        const Mat3 R = rotationMatrix(mesh_orientation[local]);
         c.principal_inertia[cell] = {eigen.eigenvalues()(0), eigen.eigenvalues()(1), eigen.eigenvalues()(2)};
+        const Vec3 centroid = mesh.centroids[local];
+        if (identity) {
+            c.orientation[cell] = mesh_orientation[local];
+            c.position[cell] = centroid;
+        } else {
+            c.orientation[cell] = normalised(pose.orientation * mesh_orientation[local]);
+            c.position[cell] = pose.translation + pose_rotation * centroid;
+            c.velocity[cell] =
+                pose.velocity + cross(pose.angular_velocity, c.position[cell] - pose.translation);
+            c.angular_velocity[cell] =
+                transposeTimes(rotationMatrix(c.orientation[cell]), pose.angular_velocity);
+        }
 
         // The core: the cell eroded by r_d, stored in the body frame.
-        const Vec3 centroid = mesh.centroids[cell];
         std::vector<Vec3> vertices;
-        for (int v = mesh.cellVertexOffset[cell]; v < mesh.cellVertexOffset[cell + 1]; ++v)
+        for (int v = mesh.cellVertexOffset[local]; v < mesh.cellVertexOffset[local + 1]; ++v)
             vertices.push_back(mesh.vertices[v] - centroid);
         std::vector<CellPlane> planes;
-        for (int f = mesh.cellFaceOffset[cell]; f < mesh.cellFaceOffset[cell + 1]; ++f) {
+        for (int f = mesh.cellFaceOffset[local]; f < mesh.cellFaceOffset[local + 1]; ++f) {
             const Vec3 on_face = vertices[mesh.faceVertices[mesh.faceVertexOffset[f]]];
             planes.push_back({mesh.faceNormal[f], dot(mesh.faceNormal[f], on_face)});
         }
@@ -195,13 +234,15 @@ void DemModel::buildCells(const VoronoiMesh& mesh)
         c.bounding_radius[cell] = reach + dilation;
     }
     const double G = parameters_.rock_youngs_modulus / (2.0 * (1.0 + parameters_.rock_poisson_ratio));
-    rayleigh_time_step_ = pi * smallest_radius * std::sqrt(parameters_.rock_density / G) /
+    rayleigh_time_step_ = pi * smallest_radius_ * std::sqrt(parameters_.rock_density / G) /
                           (0.1631 * parameters_.rock_poisson_ratio + 0.8766);
+    return mesh_orientation;
 }
 
-void DemModel::buildBonds(const VoronoiMesh& mesh)
+void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::vector<Quat>& mesh_orientation)
 {
     // Interfaces = cell pairs; their bonds are contiguous (sorted by pair, stable).
+    // New cells have the highest indices, so appended interfaces keep the (i, j) order.
     std::vector<int> order(mesh.nBonds());
     std::iota(order.begin(), order.end(), 0);
     auto pairOf = [&](int b) {
@@ -212,22 +253,24 @@ void DemModel::buildBonds(const VoronoiMesh& mesh)
 
     InterfaceArrays& f = interfaces_;
     BondArrays& b = bonds_;
-    f.bond_offset.assign(1, 0);
+    if (f.bond_offset.empty()) f.bond_offset.assign(1, 0);
     const double beta = parameters_.bond_damping;
-    for (std::size_t first = 0; first < order.size();) {
-        std::size_t last = first;
-        while (last < order.size() && pairOf(order[last]) == pairOf(order[first])) ++last;
-        const VoronoiBond& head = mesh.bonds[order[first]];
+    for (std::size_t head_index = 0; head_index < order.size();) {
+        std::size_t last = head_index;
+        while (last < order.size() && pairOf(order[last]) == pairOf(order[head_index])) ++last;
+        const VoronoiBond& head = mesh.bonds[order[head_index]];
         const bool swapped = head.cellI > head.cellJ;
-        const int ci = swapped ? head.cellJ : head.cellI, cj = swapped ? head.cellI : head.cellJ;
-        if (ci == cj || ci < 0 || cj >= mesh.nCells())
+        const int li = swapped ? head.cellJ : head.cellI, lj = swapped ? head.cellI : head.cellJ;
+        if (li == lj || li < 0 || lj >= mesh.nCells())
             throw UserError("the Voronoi mesh has an invalid bond");
+        const int ci = first_cell + li, cj = first_cell + lj;
         // Outward normals of each cell's face (cell J's face normal from the mesh when known).
         const Vec3 normal_I = head.normalI;
         const Vec3 normal_J =
             head.faceJ >= 0 && head.faceJ < mesh.nFaces() ? mesh.faceNormal[head.faceJ] : -normal_I;
-        const Mat3 Ri = rotationMatrix(cells_.orientation[ci]);
-        const Mat3 Rj = rotationMatrix(cells_.orientation[cj]);
+        // Body frames relative to the mesh frame (where the bond points are given).
+        const Mat3 Ri = rotationMatrix(mesh_orientation[li]);
+        const Mat3 Rj = rotationMatrix(mesh_orientation[lj]);
         f.cell_i.push_back(ci);
         f.cell_j.push_back(cj);
         f.normal_i.push_back(transposeTimes(Ri, swapped ? normal_J : normal_I));
@@ -244,29 +287,205 @@ void DemModel::buildBonds(const VoronoiMesh& mesh)
         f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
                                      ? beta
                                      : 2.0 * beta * std::sqrt(reduced_mass / stiffness));
-        for (std::size_t e = first; e < last; ++e) {
+        for (std::size_t e = head_index; e < last; ++e) {
             const VoronoiBond& bond = mesh.bonds[order[e]];
-            b.anchor_i.push_back(transposeTimes(Ri, bond.point - cells_.position[ci]));
-            b.anchor_j.push_back(transposeTimes(Rj, bond.point - cells_.position[cj]));
+            b.anchor_i.push_back(transposeTimes(Ri, bond.point - mesh.centroids[li]));
+            b.anchor_j.push_back(transposeTimes(Rj, bond.point - mesh.centroids[lj]));
         }
-        const int n_bonds = static_cast<int>(last - first);
+        const int n_bonds = static_cast<int>(last - head_index);
         f.intact_bonds.push_back(n_bonds);
         f.bond_offset.push_back(f.bond_offset.back() + n_bonds);
         cells_.initial_bond_count[ci] += n_bonds;
         cells_.initial_bond_count[cj] += n_bonds;
-        first = last;
+        head_index = last;
     }
     const int n_interfaces = f.size(), n_bonds = static_cast<int>(b.anchor_i.size());
-    f.force_on_i.assign(n_interfaces, Vec3{});
-    f.torque_on_i.assign(n_interfaces, Vec3{});
-    f.torque_on_j.assign(n_interfaces, Vec3{});
-    b.stage.assign(n_bonds, bondElastic);
-    b.onset_displacement.assign(n_bonds, 0.0);
-    b.onset_stress.assign(n_bonds, 0.0);
-    b.rupture_displacement.assign(n_bonds, 0.0);
-    b.max_displacement.assign(n_bonds, 0.0);
-    b.damage.assign(n_bonds, 0.0);
+    f.force_on_i.resize(n_interfaces, Vec3{});
+    f.torque_on_i.resize(n_interfaces, Vec3{});
+    f.torque_on_j.resize(n_interfaces, Vec3{});
+    b.stage.resize(n_bonds, bondElastic);
+    b.onset_displacement.resize(n_bonds, 0.0);
+    b.onset_stress.resize(n_bonds, 0.0);
+    b.rupture_displacement.resize(n_bonds, 0.0);
+    b.max_displacement.resize(n_bonds, 0.0);
+    b.damage.resize(n_bonds, 0.0);
     counters_.bonds = n_bonds;
+}
+
+// ---- Cells entering and leaving ------------------------------------------------
+
+int DemModel::insertCells(const VoronoiMesh& mesh, const WallMotion& pose)
+{
+    if (mesh.nCells() == 0) throw UserError("insertCells: the mesh to insert has no cells");
+    const int first = cells_.size();
+    const std::vector<Quat> mesh_orientation = appendCells(mesh, pose, false);
+    appendBonds(mesh, first, mesh_orientation);
+    buildIncidence();
+    // The kinetic energy the new cells bring (they start unstrained and, placed
+    // clear of everything, without contacts).
+    double kinetic = 0.0;
+    for (int c = first; c < cells_.size(); ++c) {
+        const Vec3 w = cells_.angular_velocity[c], inertia = cells_.principal_inertia[c];
+        kinetic += 0.5 * cells_.mass[c] * norm2(cells_.velocity[c]) +
+                   0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
+    }
+    energies_.exchanged -= kinetic;
+    energy_floor_ = 0.0;  // re-derived from the bonds at the next check
+    lists_valid_ = forces_valid_ = false;
+    return first;
+}
+
+namespace {
+
+// Keep the entries whose flag is set, in order.
+template <class T>
+void keepFlagged(std::vector<T>& v, const std::vector<char>& keep)
+{
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (keep[i]) v[out++] = v[i];
+    v.resize(out);
+}
+
+}  // namespace
+
+std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
+{
+    const int n = cells_.size();
+    requireCount(remove.size(), n);
+    std::vector<int> new_index(n, -1);
+    std::vector<char> keep_cell(n);
+    int kept = 0;
+    for (int c = 0; c < n; ++c) {
+        keep_cell[c] = !remove[c];
+        if (keep_cell[c]) new_index[c] = kept++;
+    }
+    if (kept == n) return new_index;
+    const double energy_before = energies_.kinetic() + energies_.stored();
+
+    // Cells, with their core vertex ranges.
+    CellArrays& c = cells_;
+    std::vector<int> core_offset(1, 0);
+    std::vector<Vec3> core_vertices;
+    for (int cell = 0; cell < n; ++cell) {
+        if (!keep_cell[cell]) continue;
+        core_vertices.insert(core_vertices.end(), c.core_vertices.begin() + c.core_vertex_offset[cell],
+                             c.core_vertices.begin() + c.core_vertex_offset[cell + 1]);
+        core_offset.push_back(static_cast<int>(core_vertices.size()));
+    }
+    c.core_vertex_offset = std::move(core_offset);
+    c.core_vertices = std::move(core_vertices);
+    keepFlagged(c.position, keep_cell);
+    keepFlagged(c.velocity, keep_cell);
+    keepFlagged(c.orientation, keep_cell);
+    keepFlagged(c.angular_velocity, keep_cell);
+    keepFlagged(c.force, keep_cell);
+    keepFlagged(c.torque, keep_cell);
+    keepFlagged(c.mass, keep_cell);
+    keepFlagged(c.principal_inertia, keep_cell);
+    keepFlagged(c.dilation_radius, keep_cell);
+    keepFlagged(c.bounding_radius, keep_cell);
+    keepFlagged(c.initial_bond_count, keep_cell);
+
+    // Interfaces and their bonds: kept when both cells stay (a bond to a removed cell
+    // goes with it). Monotone renumbering keeps the (cell_i, cell_j) order.
+    InterfaceArrays& f = interfaces_;
+    std::vector<char> keep_face(f.size()), keep_bond(bonds_.size(), 0);
+    std::vector<int> bond_offset(1, 0);
+    for (int k = 0; k < f.size(); ++k) {
+        keep_face[k] = keep_cell[f.cell_i[k]] && keep_cell[f.cell_j[k]];
+        if (!keep_face[k]) continue;
+        f.cell_i[k] = new_index[f.cell_i[k]];
+        f.cell_j[k] = new_index[f.cell_j[k]];
+        for (int b = f.bond_offset[k]; b < f.bond_offset[k + 1]; ++b) keep_bond[b] = 1;
+        bond_offset.push_back(bond_offset.back() + f.bond_offset[k + 1] - f.bond_offset[k]);
+    }
+    f.bond_offset = std::move(bond_offset);
+    keepFlagged(f.cell_i, keep_face);
+    keepFlagged(f.cell_j, keep_face);
+    keepFlagged(f.intact_bonds, keep_face);
+    keepFlagged(f.normal_i, keep_face);
+    keepFlagged(f.normal_j, keep_face);
+    keepFlagged(f.length_i, keep_face);
+    keepFlagged(f.length_j, keep_face);
+    keepFlagged(f.bond_area, keep_face);
+    keepFlagged(f.damping_beta, keep_face);
+    keepFlagged(f.force_on_i, keep_face);
+    keepFlagged(f.torque_on_i, keep_face);
+    keepFlagged(f.torque_on_j, keep_face);
+    BondArrays& b = bonds_;
+    keepFlagged(b.anchor_i, keep_bond);
+    keepFlagged(b.anchor_j, keep_bond);
+    keepFlagged(b.stage, keep_bond);
+    keepFlagged(b.onset_displacement, keep_bond);
+    keepFlagged(b.onset_stress, keep_bond);
+    keepFlagged(b.rupture_displacement, keep_bond);
+    keepFlagged(b.max_displacement, keep_bond);
+    keepFlagged(b.damage, keep_bond);
+    counters_.bonds = b.size();
+
+    // Contact histories: pairs and wall items of remaining cells, renumbered (the
+    // keys stay sorted); the interface of a kept pair is renumbered too.
+    std::vector<int> new_face(keep_face.size(), -1);
+    for (int k = 0, next = 0; k < static_cast<int>(keep_face.size()); ++k)
+        if (keep_face[k]) new_face[k] = next++;
+    ContactPairArrays& p = pairs_;
+    std::vector<char> keep_pair(p.size());
+    for (int k = 0; k < p.size(); ++k) {
+        keep_pair[k] = keep_cell[p.cell_a[k]] && keep_cell[p.cell_b[k]];
+        if (!keep_pair[k]) continue;
+        p.cell_a[k] = new_index[p.cell_a[k]];
+        p.cell_b[k] = new_index[p.cell_b[k]];
+        if (p.interface[k] >= 0) p.interface[k] = new_face[p.interface[k]];
+    }
+    keepFlagged(p.cell_a, keep_pair);
+    keepFlagged(p.cell_b, keep_pair);
+    keepFlagged(p.interface, keep_pair);
+    keepFlagged(p.tangential_spring, keep_pair);
+    keepFlagged(p.last_normal, keep_pair);
+    keepFlagged(p.separation_margin, keep_pair);
+    keepFlagged(p.force_on_b, keep_pair);
+    keepFlagged(p.torque_on_a, keep_pair);
+    keepFlagged(p.torque_on_b, keep_pair);
+    keepFlagged(p.elastic_energy, keep_pair);
+    keepFlagged(p.damping_power, keep_pair);
+    keepFlagged(p.friction_dissipation, keep_pair);
+    keepFlagged(p.status, keep_pair);
+    WallContactArrays& w = wall_items_;
+    std::vector<char> keep_item(w.size());
+    std::vector<int> triangle_offset(1, 0), triangles;
+    for (int k = 0; k < w.size(); ++k) {
+        keep_item[k] = keep_cell[w.cell[k]];
+        if (!keep_item[k]) continue;
+        w.cell[k] = new_index[w.cell[k]];
+        triangles.insert(triangles.end(), w.triangles.begin() + w.triangle_offset[k],
+                         w.triangles.begin() + w.triangle_offset[k + 1]);
+        triangle_offset.push_back(static_cast<int>(triangles.size()));
+    }
+    w.triangle_offset = std::move(triangle_offset);
+    w.triangles = std::move(triangles);
+    keepFlagged(w.cell, keep_item);
+    keepFlagged(w.wall, keep_item);
+    keepFlagged(w.tangential_spring, keep_item);
+    keepFlagged(w.last_normal, keep_item);
+    keepFlagged(w.force_on_cell, keep_item);
+    keepFlagged(w.torque_on_cell, keep_item);
+    keepFlagged(w.elastic_energy, keep_item);
+    keepFlagged(w.damping_power, keep_item);
+    keepFlagged(w.friction_dissipation, keep_item);
+    keepFlagged(w.wall_power, keep_item);
+    keepFlagged(w.status, keep_item);
+
+    buildIncidence();
+    energy_floor_ = 0.0;
+    lists_valid_ = false;
+    // Forces of the remaining cells without the removed ones; the energy that left
+    // is what the kinetic and stored energies lost.
+    computeForces(0.0);
+    measureCells(last_dt_);
+    energies_.exchanged += energy_before - (energies_.kinetic() + energies_.stored());
+    updateStatus(-1);
+    return new_index;
 }
 
 void DemModel::buildIncidence()
@@ -834,9 +1053,18 @@ void DemModel::runContactKernels(double dt)
     counters_.contacts_active = sumContactEnergies(pairs_, dt, energies_, counters_.core_intersections);
     counters_.wall_contacts_active =
         sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
-    for (int w = 0; w < nWalls(); ++w) walls_[w].reaction = Vec3{};
+    for (WallState& w : walls_) {
+        w.reaction = w.reaction_torque = Vec3{};
+        w.power = 0.0;
+    }
     for (int i = 0; i < wall_items_.size(); ++i) {
-        walls_[wall_items_.wall[i]].reaction -= wall_items_.force_on_cell[i];
+        WallState& w = walls_[wall_items_.wall[i]];
+        const Vec3 force = wall_items_.force_on_cell[i];
+        w.reaction -= force;
+        // Torque on the wall about its origin: minus the cell's force system moved there.
+        w.reaction_torque -=
+            cross(cells_.position[wall_items_.cell[i]] - w.origin, force) + wall_items_.torque_on_cell[i];
+        w.power += wall_items_.wall_power[i];
         energies_.wall_work += wall_items_.wall_power[i] * dt;
     }
 }
@@ -1009,7 +1237,8 @@ void DemModel::updateStatus(int non_finite_cell)
     }
     if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
         status_.code = DemStatusCode::nonFiniteState;
-    else if (status_.energy_error > parameters_.energy_growth_tolerance * std::max(energy_scale_, energy_floor_) &&
+    else if (status_.energy_error >
+                 parameters_.energy_growth_tolerance * std::max(energy_scale_, energy_floor_) &&
              status_.energy_error > 0.0)
         status_.code = DemStatusCode::energyGrowth;
 }
@@ -1017,6 +1246,7 @@ void DemModel::updateStatus(int non_finite_cell)
 double DemModel::step(double dt)
 {
     if (!forces_valid_) computeForces(0.0);
+    last_dt_ = dt;
     kickDrift(dt);
     moveWalls(dt);
     computeForces(dt);

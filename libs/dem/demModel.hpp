@@ -78,6 +78,22 @@ struct WallMotion {
 class DemModel {
 public:
     DemModel(const VoronoiMesh& mesh, const DemParameters& parameters);
+    // A model without cells (a crusher filled by a feed): cells come by insertCells().
+    explicit DemModel(const DemParameters& parameters);
+
+    // ---- Cells entering and leaving (feed and discharge) ---------------------
+    // Append the cells and bonds of `mesh`, placed rigidly: x = pose.translation +
+    // R(pose.orientation) x_mesh, moving with v(x) = pose.velocity + pose.angular_velocity
+    // x (x - pose.translation). New cells take indices [returned, cells().size()); the
+    // indices of existing cells, interfaces, bonds and contact histories are unchanged.
+    // The kinetic energy brought in is booked in energies().exchanged.
+    int insertCells(const VoronoiMesh& mesh, const WallMotion& pose);
+    // Remove the cells with remove[c] != 0 (size cells().size()) and everything that
+    // names them: interfaces and their bonds, contact pairs and wall items; the rest is
+    // compacted in order (old index -> new index returned, -1 for removed cells), so
+    // the state equals that of a model built from the remaining cells. Forces are
+    // re-evaluated; the energy leaving (kinetic + strain) is booked in energies().exchanged.
+    std::vector<int> removeCells(const std::vector<char>& remove);
 
     // ---- Walls -------------------------------------------------------------
     // A rigid plane through point, normal pointing into the domain, moving with velocity.
@@ -93,6 +109,10 @@ public:
     const WallState& wall(int w) const { return walls_[w]; }
     Vec3 wallDisplacement(int w) const { return walls_[w].origin - walls_[w].initial_origin; }
     Vec3 wallReaction(int w) const { return walls_[w].reaction; }
+    // Torque of the cells' forces on wall w about its origin, and the power the wall
+    // delivers to the cells (sum of contact force . wall velocity at the contact), this step.
+    Vec3 wallReactionTorque(int w) const { return walls_[w].reaction_torque; }
+    double wallPower(int w) const { return walls_[w].power; }
 
     // ---- Time stepping -----------------------------------------------------
     // pi R sqrt(rho/G) / (0.1631 nu + 0.8766), R the smallest volume-equivalent radius.
@@ -151,8 +171,11 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    void buildCells(const VoronoiMesh& mesh);
-    void buildBonds(const VoronoiMesh& mesh);
+    void setUpLaws();
+    // Append the cells of mesh (placed by pose unless identity) and their bonds; the
+    // body frames relative to the mesh frame are returned for the bonds' anchors.
+    std::vector<Quat> appendCells(const VoronoiMesh& mesh, const WallMotion& pose, bool identity);
+    void appendBonds(const VoronoiMesh& mesh, int first_cell, const std::vector<Quat>& mesh_orientation);
     void buildIncidence();
     void shrinkToFit();
     void refreshKinematicCaches();
@@ -178,7 +201,9 @@ private:
     BondLawRunner bond_runner_ = nullptr;
     ContactLawRunners contact_runners_;
     double rayleigh_time_step_ = 0.0;
+    double smallest_radius_ = 1e300;  // smallest volume-equivalent radius of any cell so far
     double skin_ = 0.0;
+    double last_dt_ = 0.0;
 
     CellArrays cells_;
     InterfaceArrays interfaces_;

@@ -84,7 +84,7 @@ struct WallContactArrays {
     int size() const { return static_cast<int>(cell.size()); }
 };
 
-// Energy bookkeeping [J]. Balance: kinetic + stored + dissipated - external work = constant.
+// Energy bookkeeping [J]. Balance: kinetic + stored + dissipated + exchanged - external work = constant.
 struct DemEnergies {
     double kinetic_translation = 0.0;
     double kinetic_rotation = 0.0;
@@ -96,13 +96,16 @@ struct DemEnergies {
     double fracture = 0.0;         // cumulative damage dissipation (-> G_f A/n per broken bond)
     double wall_work = 0.0;        // cumulative work done on the cells by the walls
     double gravity_work = 0.0;     // cumulative work done on the cells by gravity
+    // Cumulative energy carried out of the model by removed cells (their kinetic energy
+    // and the strain of their bonds and contacts) minus that brought in by inserted cells.
+    double exchanged = 0.0;
 
     double kinetic() const { return kinetic_translation + kinetic_rotation; }
     double stored() const { return bond_strain + contact_elastic; }
     double dissipated() const { return bond_damping + contact_damping + friction + fracture; }
     double externalWork() const { return wall_work + gravity_work; }
     // Should stay at its initial value (zero for a run started at rest and unloaded).
-    double balance() const { return kinetic() + stored() + dissipated() - externalWork(); }
+    double balance() const { return kinetic() + stored() + dissipated() + exchanged - externalWork(); }
 };
 
 struct WallState {
@@ -114,6 +117,8 @@ struct WallState {
     Vec3 normal;             // plates: unit normal into the domain
     Vec3 initial_origin;     // displacement = origin - initial_origin
     Vec3 reaction;           // force the cells exert on the wall, this step [N]
+    Vec3 reaction_torque;    // torque of those forces about origin, this step [N m]
+    double power = 0.0;      // power the wall delivers to the cells, this step [W]
     int first_triangle = 0;  // into DemModel's triangle vertex array (3 per triangle)
     int n_triangles = 0;
 };

@@ -66,16 +66,19 @@ Loading readLoading(const Dictionary& d)
         PlateSpec s;
         s.normal = normalised(p.get<Vec3>("normal"));
         s.velocity = p.get<Vec3>("velocity");
-        if (norm(s.normal) == 0) throw UserError(p.fileName() + ": plates/" + name + "/normal must not be zero");
+        if (norm(s.normal) == 0)
+            throw UserError(p.fileName() + ": plates/" + name + "/normal must not be zero");
         return s;
     };
     l.lower = plate("lower");
     l.upper = plate("upper");
     if (!(l.lower.normal.z > 0.99 && l.upper.normal.z < -0.99))
-        throw UserError(d.fileName() + ": plates must be horizontal: lower normal (0 0 1), upper normal (0 0 -1)");
+        throw UserError(d.fileName() +
+                        ": plates must be horizontal: lower normal (0 0 1), upper normal (0 0 -1)");
     l.startGap = plates.getScalarOrDefault("startGap", 0.0, Bounds::nonNegative());
     l.gravity = d.getOrDefault<Vec3>("gravity", Vec3{0, 0, -9.81});
-    if (d.found("settling")) l.settlingTime = d.subDict("settling").getScalar("duration", Bounds::nonNegative());
+    if (d.found("settling"))
+        l.settlingTime = d.subDict("settling").getScalar("duration", Bounds::nonNegative());
     if (d.found("stop")) {
         const Dictionary& stop = d.subDict("stop");
         l.stopForceFraction = stop.getScalarOrDefault("forceDropFraction", 0.0, Bounds::closedOpen(0, 1));
@@ -84,9 +87,10 @@ Loading readLoading(const Dictionary& d)
     }
     const double approachSpeed = dot(l.lower.velocity - l.upper.velocity, Vec3{0, 0, 1});
     if ((l.stopForceFraction > 0 || l.stopDisplacement > 0) && !(approachSpeed > 0))
-        throw UserError(d.fileName() +
-                        ": the plates do not approach each other (upper velocity z must be below the lower "
-                        "one), so the stop criterion can never be met; give the upper plate a downward velocity");
+        throw UserError(
+            d.fileName() +
+            ": the plates do not approach each other (upper velocity z must be below the lower "
+            "one), so the stop criterion can never be met; give the upper plate a downward velocity");
     return l;
 }
 
@@ -159,7 +163,8 @@ void writeDemVtk(const fs::path& caseDir, int index, const DemModel& model, cons
     }
     writeLinesVtp(vtk / ("bonds" + suffix + ".vtp"), points, lines, {Field::scalar("D", damage)}, {}, time);
 
-    for (const auto& [name, ext] : {std::pair<std::string, std::string>{"cells", ".vtu"}, {"bonds", ".vtp"}}) {
+    for (const auto& [name, ext] :
+         {std::pair<std::string, std::string>{"cells", ".vtu"}, {"bonds", ".vtp"}}) {
         SeriesFile series(vtk / (name + ext + ".series"));
         if (!restarted && index == 0) series.truncateFrom(-1.0);
         series.add(name + suffix + ext, time);
@@ -215,7 +220,8 @@ DemEnergies energiesFrom(const std::vector<double>& a)
 
 }  // namespace
 
-void writeDemState(const fs::path& file, const DemModel& model, long step, double peakForce, bool loadingStarted)
+void writeDemState(const fs::path& file, const DemModel& model, long step, double peakForce,
+                   bool loadingStarted)
 {
     StateFile s;
     const CellArrays& cells = model.cells();
@@ -251,13 +257,14 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
     for (int k = 0; k < model.nWalls(); ++k) {
         const WallState& ws = model.wall(k);
         walls.insert(walls.end(), {ws.origin.x, ws.origin.y, ws.origin.z, ws.orientation.w, ws.orientation.x,
-                                   ws.orientation.y, ws.orientation.z, ws.velocity.x, ws.velocity.y, ws.velocity.z,
-                                   ws.angular_velocity.x, ws.angular_velocity.y, ws.angular_velocity.z,
-                                   ws.initial_origin.x, ws.initial_origin.y, ws.initial_origin.z, ws.reaction.x,
-                                   ws.reaction.y, ws.reaction.z});
+                                   ws.orientation.y, ws.orientation.z, ws.velocity.x, ws.velocity.y,
+                                   ws.velocity.z, ws.angular_velocity.x, ws.angular_velocity.y,
+                                   ws.angular_velocity.z, ws.initial_origin.x, ws.initial_origin.y,
+                                   ws.initial_origin.z, ws.reaction.x, ws.reaction.y, ws.reaction.z});
     }
     s.put("walls", walls);
     s.put("energies", energyArray(model.energies()));
+    s.putScalar("energyExchanged", model.energies().exchanged);
     s.putScalar("initialBalance", model.initialBalance());
     s.putScalar("time", model.time());
     s.put("step", std::vector<std::int64_t>{step});
@@ -331,7 +338,9 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     r.time = s.scalar("time");
     r.peakForce = s.scalar("peakForce");
     r.loadingStarted = s.bytes("loadingStarted", 1)[0] != 0;
-    model.setClock(r.time, r.step, energiesFrom(s.doubles("energies", 10)), s.scalar("initialBalance"));
+    DemEnergies energies = energiesFrom(s.doubles("energies", 10));
+    if (s.has("energyExchanged")) energies.exchanged = s.scalar("energyExchanged");
+    model.setClock(r.time, r.step, energies, s.scalar("initialBalance"));
     return r;
 }
 

@@ -159,6 +159,86 @@ TriSurface revolveProfile(const Profile& profile, int nSegments, SurfaceFacing f
     return s;
 }
 
+TriSurface revolveProfileShaped(const Profile& profile, int nSegments, SurfaceFacing facing)
+{
+    revolveProfile(profile, 3, facing);  // the same checks of the profile
+    if (nSegments < 3) throw UserError("a surface of revolution needs at least 3 segments around");
+    double r_max = 0.0;
+    for (const auto& p : profile) r_max = std::max(r_max, p.r);
+    const auto ringCount = [&](double r) {
+        if (r <= 0.0) return 1;
+        return std::max(3, std::min(nSegments, static_cast<int>(std::ceil(2.0 * nSegments * r / r_max - 1e-9))));
+    };
+    const auto spacing = [&](double r) {  // target circumferential spacing at r
+        return 2.0 * pi * std::max(r, 0.5 * r_max) / nSegments;
+    };
+    // Refined profile: segment [p, p+1] split where the count of local steps
+    // h(s) = 0.87 x the circumferential spacing, N(s) = integral of ds / h, passes an
+    // integer (N(end) rounded): rows of near-equilateral triangles of the local size.
+    Profile rings;
+    for (std::size_t p = 0; p + 1 < profile.size(); ++p) {
+        const ProfilePoint a = profile[p], b = profile[p + 1];
+        const double length = std::hypot(b.r - a.r, b.z - a.z);
+        const int n_sub = 2000;
+        std::vector<double> steps(n_sub + 1, 0.0);  // N at t = i / n_sub (midpoint rule)
+        for (int i = 0; i < n_sub; ++i) {
+            const double t = (i + 0.5) / n_sub;
+            steps[i + 1] = steps[i] + length / n_sub / (0.87 * spacing(a.r + t * (b.r - a.r)));
+        }
+        const int m = std::max(1, static_cast<int>(std::lround(steps[n_sub])));
+        int i = 0;
+        for (int k = 0; k < m; ++k) {
+            const double target = steps[n_sub] * k / m;
+            while (i < n_sub && steps[i + 1] < target) ++i;
+            const double t =
+                (i + (steps[i + 1] > steps[i] ? (target - steps[i]) / (steps[i + 1] - steps[i]) : 0.0)) / n_sub;
+            rings.push_back({a.r + t * (b.r - a.r), a.z + t * (b.z - a.z)});
+        }
+    }
+    rings.push_back(profile.back());
+    TriSurface s;
+    std::vector<int> first(rings.size()), count(rings.size());
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+        first[k] = static_cast<int>(s.points.size());
+        count[k] = ringCount(rings[k].r);
+        for (int i = 0; i < count[k]; ++i) {  // every other ring turned by half a spacing
+            const double a = 2.0 * pi * (i + 0.5 * (k % 2)) / count[k];
+            s.points.push_back({rings[k].r * std::cos(a), rings[k].r * std::sin(a), rings[k].z});
+        }
+    }
+    // Zip ring A to ring B: advance on the ring whose next point comes first in angle.
+    for (std::size_t k = 0; k + 1 < rings.size(); ++k) {
+        const int na = count[k], nb = count[k + 1];
+        const double oa = 0.5 * (k % 2), ob = 0.5 * ((k + 1) % 2);
+        const auto A = [&](int i) { return first[k] + i % na; };
+        const auto B = [&](int j) { return first[k + 1] + j % nb; };
+        int i = 0, j = 0;
+        while (i < na || j < nb) {
+            const double next_a = na > 1 && i < na ? (i + 1 + oa) / na : 2.0;
+            const double next_b = nb > 1 && j < nb ? (j + 1 + ob) / nb : 2.0;
+            if (next_a <= next_b) {
+                s.triangles.push_back({A(i), A(i + 1), B(j)});
+                ++i;
+            } else {
+                s.triangles.push_back({A(i), B(j + 1), B(j)});
+                ++j;
+            }
+            if (na == 1) i = na;  // the axis point: a fan of nb triangles
+            if (nb == 1) j = nb;
+        }
+    }
+    // Orient as revolveProfile does.
+    double radial = 0.0;
+    for (const auto& t : s.triangles) {
+        const Vec3 n = cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]);
+        const Vec3 c = (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0;
+        radial += n.x * c.x + n.y * c.y;
+    }
+    if ((radial > 0.0) != (facing == SurfaceFacing::awayFromAxis))
+        for (auto& t : s.triangles) std::swap(t[1], t[2]);
+    return s;
+}
+
 double CrusherKinematics::period() const
 {
     return 2.0 * pi / eccentric_speed;

@@ -38,6 +38,16 @@ enum class SurfaceFacing { awayFromAxis, towardsAxis };
 // UserError for fewer than 2 points, nSegments < 3, negative r, or a segment on the axis.
 TriSurface revolveProfile(const Profile& profile, int nSegments, SurfaceFacing facing);
 
+// The same surface in well-shaped triangles (what meshCrusher writes): every ring has
+// n(r) = max(3, min(nSegments, ceil(2 nSegments r / r_max))) points (nSegments on the
+// outer half of the radii, the circumferential spacing h0/2 = pi r_max / nSegments
+// inside it, so no fan of slivers closes on the axis), each profile segment is split
+// into rows 0.87 x the local circumferential spacing apart, every other ring is turned by
+// half its spacing, and neighbouring rings are zipped by angle. Triangles are
+// near-equilateral instead of the 0.45 m x 1-4 degree strips of revolveProfile.
+// The same UserErrors as revolveProfile.
+TriSurface revolveProfileShaped(const Profile& profile, int nSegments, SurfaceFacing facing);
+
 // Mantle kinematics: gyration without spin about `pivot` (on the z axis).
 struct CrusherKinematics {
     Vec3 pivot;                    // [m]

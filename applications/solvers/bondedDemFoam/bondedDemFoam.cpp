@@ -6,9 +6,18 @@
 //
 // Reads  system/controlDict, constant/rockProperties, constant/loading,
 //        constant/voronoiMesh/ (voronoiMesh)
+// A `machine` section in constant/loading instead of `plates` runs a cone crusher
+// (libs/crusher, docs/user-guide-crusher.md): mantle and concave from meshCrusher,
+// the feed factory, the choke plane and the destructor; it writes
+// postProcessing/machine/0/machine.dat and postProcessing/discharge/0/discharge.dat.
 // Writes <time>/demState (restart), postProcessing/plateForce/0/plateForce.dat,
 //        VTK/cells_<step>.vtu, VTK/bonds_<step>.vtp and their .series files
+#include <filesystem>
+
 #include "core/application.hpp"
+#include "core/dictionary.hpp"
+#include "crusher/crusherRun.hpp"
+#include "crusher/machineLoading.hpp"
 #include "demCase/demRun.hpp"
 
 using namespace rockfrac;
@@ -22,7 +31,8 @@ const AppInfo info{
     "startFrom latestTime) and cells/bonds for ParaView. SIGINT/SIGTERM write the state and exit\n"
     "with 130/143.",
     "[options]",
-    {"bondedDemFoam -case tutorials/BDT/granite", "bondedDemFoam -case tutorials/BDT/granite -dry-run"},
+    {"bondedDemFoam -case tutorials/BDT/granite", "bondedDemFoam -case tutorials/BDT/granite -dry-run",
+     "bondedDemFoam -case tutorials/CH660/tiny"},
     {},
 };
 }  // namespace
@@ -30,6 +40,12 @@ const AppInfo info{
 int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
+        const auto loading = app.path("constant/loading");
+        if (std::filesystem::exists(loading) && isMachineLoading(Dictionary::readFile(loading))) {
+            CrusherRun run(app);
+            run.printSetup();
+            return run.execute();
+        }
         BondedDemRun run(app);
         run.printSetup();
         return run.execute();

@@ -104,6 +104,44 @@ TEST_CASE("surfaces of revolution: counts, closed apex, open rims, facing", "[cr
     CHECK_THROWS_AS(revolveProfile({{0.0, 0.0}, {0.0, 1.0}}, n, SurfaceFacing::awayFromAxis), UserError);
 }
 
+TEST_CASE("well-shaped surfaces of revolution: no slivers, no strips, same topology", "[crusher]")
+{
+    const Profile mantle{{0.0, 0.66}, {0.12, 0.64}, {0.22, 0.55}, {0.43, 0.10}, {0.50, 0.0}};
+    const Profile concave{{0.3846, 0.505}, {0.4276, 0.318}, {0.4759, 0.1321}, {0.5605, 0.0}};
+    for (int n : {90, 360}) {
+        for (const bool is_mantle : {true, false}) {
+            const TriSurface s = revolveProfileShaped(is_mantle ? mantle : concave, n,
+                                                      is_mantle ? SurfaceFacing::awayFromAxis
+                                                                : SurfaceFacing::towardsAxis);
+            const SurfaceCheck c = checkSurface(s);
+            INFO("n " << n << (is_mantle ? " mantle" : " concave"));
+            CHECK(c.nonManifoldEdges == 0);
+            CHECK(c.misorientedEdges == 0);
+            CHECK(c.degenerateTriangles == 0);
+            CHECK(c.boundaryEdges == (is_mantle ? n : 2 * n));  // open rims only
+            const double spacing = 2 * pi * (is_mantle ? 0.5 : 0.5605) / n;
+            double smallest_angle = 180.0, longest = 0.0;
+            for (const auto& t : s.triangles) {
+                const Vec3 p[3] = {s.points[t[0]], s.points[t[1]], s.points[t[2]]};
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
+                    smallest_angle =
+                        std::min(smallest_angle, 180 / pi * std::acos(dot(u, v) / (norm(u) * norm(v))));
+                    longest = std::max(longest, norm(u));
+                }
+                const Vec3 normal = cross(p[1] - p[0], p[2] - p[0]);
+                const Vec3 centre = (p[0] + p[1] + p[2]) / 3.0;
+                CHECK((normal.x * centre.x + normal.y * centre.y > 0) == is_mantle);
+            }
+            CHECK(smallest_angle > 30.0);  // revolveProfile: 1 degree
+            CHECK(longest < 1.5 * spacing);
+        }
+    }
+    // Every point lies on the profile's surface of revolution.
+    const TriSurface s = revolveProfileShaped(mantle, 90, SurfaceFacing::awayFromAxis);
+    for (const Vec3& p : s.points) CHECK(profileDistance({{std::hypot(p.x, p.y), p.z}, {std::hypot(p.x, p.y), p.z}}, mantle) < 1e-12);
+}
+
 TEST_CASE("gyration: period of 290 rpm, rigid pose about the pivot", "[crusher]")
 {
     CrusherKinematics k;

@@ -7,6 +7,10 @@
 //        constant/crusherKinematics       pivot, eccentric angle and speed (for the DEM walls)
 //        VTK/mantle.vtp, VTK/concave.vtp  the surfaces for ParaView
 //
+// Triangulation (revolveProfileShaped): nSegments points per ring on the outer half of the
+// radii, fewer towards the axis, each profile segment split so that the triangles are
+// near-equilateral (no long strips, no fan of slivers at the mantle top).
+//
 // The mantle gyrates without spin about the pivot (libs/geometry/crusherGeometry.hpp);
 // the gaps at the closed and open sides are computed from the tilted mantle in the
 // meridian plane of each side and printed (docs/theory-fragments.md, "Crusher").
@@ -111,9 +115,9 @@ int main(int argc, char** argv)
             throw UserError(dict.fileName() + ": " + e.what());
         }
         const TriSurface mantle =
-            revolveProfile(design.chamber.mantle, n_segments, SurfaceFacing::awayFromAxis);
+            revolveProfileShaped(design.chamber.mantle, n_segments, SurfaceFacing::awayFromAxis);
         const TriSurface concave =
-            revolveProfile(design.chamber.concave, n_segments, SurfaceFacing::towardsAxis);
+            revolveProfileShaped(design.chamber.concave, n_segments, SurfaceFacing::towardsAxis);
 
         const CrusherKinematics& k = design.kinematics;
         const ChamberGaps& g = design.gaps;

@@ -1,0 +1,170 @@
+// crusherPost: the crusher's performance from bondedDemFoam's machine time series.
+//
+// Reads  postProcessing/machine/0/machine.dat, postProcessing/discharge/0/discharge.dat,
+//        system/crusherPostDict (steadyStart [s], pistonArea [m^2]),
+//        constant/crusherKinematics (closedSideSetting, for P80 vs CSS)
+// Writes postProcessing/crusherPost/summary.dat, power.png, pressure.png, throughput.png, psd.png
+//
+// Definitions (docs/theory-crusher.md): power draw = sum of contact force . mantle
+// surface velocity; hydraulic pressure = vertical force on the mantle / piston area;
+// throughput = discharged mass per second; means and spreads over t >= steadyStart.
+#include <cmath>
+#include <cstdio>
+
+#include "core/application.hpp"
+#include "core/atomicFile.hpp"
+#include "core/dictionary.hpp"
+#include "fragments/psd.hpp"
+#include "io/timeSeries.hpp"
+#include "stats/gnuplot.hpp"
+
+using namespace rockfrac;
+namespace fs = std::filesystem;
+
+namespace {
+
+const AppInfo info{
+    "crusherPost",
+    "Power draw, hydraulic pressure, throughput (steady-state means and spreads after the start-up)\n"
+    "and the discharge PSD (P50, P80 against the CSS) of a bondedDemFoam crusher run, with PNG plots\n"
+    "and a one-screen summary.",
+    "[options]",
+    {"crusherPost -case tutorials/CH660/tiny"},
+    {},
+};
+
+struct Stat {
+    double mean = 0.0, spread = 0.0;  // mean and standard deviation
+    int n = 0;
+};
+
+Stat statistics(const std::vector<double>& v)
+{
+    Stat s;
+    s.n = static_cast<int>(v.size());
+    if (v.empty()) return s;
+    for (double x : v) s.mean += x;
+    s.mean /= s.n;
+    for (double x : v) s.spread += (x - s.mean) * (x - s.mean);
+    s.spread = s.n > 1 ? std::sqrt(s.spread / (s.n - 1)) : 0.0;
+    return s;
+}
+
+void plotSeries(const fs::path& png, const std::string& title, const std::string& ylabel,
+                const std::vector<double>& t, const std::vector<double>& y, double scale, double steadyStart)
+{
+    std::vector<std::vector<double>> rows;
+    for (std::size_t i = 0; i < t.size(); ++i) rows.push_back({t[i], scale * y[i]});
+    std::string g = stats::gnuplotDataBlock("data", rows);
+    g += "set title " + stats::gnuplotString(title) + "\nset xlabel 'time [s]'\nset ylabel " +
+         stats::gnuplotString(ylabel) + "\nset grid\n";
+    g += "set arrow from " + std::to_string(steadyStart) + ", graph 0 to " + std::to_string(steadyStart) +
+         ", graph 1 nohead dt 2\n";
+    g += "plot $data using 1:2 with lines " + stats::seriesColour(0) + " title ''\n";
+    stats::renderPng(g, png);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return runApplication(info, argc, argv, [](Application& app) {
+        const Dictionary dict = Dictionary::readFile(app.path("system/crusherPostDict"));
+        const double steadyStart = dict.getScalar("steadyStart", Bounds::nonNegative());
+        const double pistonArea = dict.getScalar("pistonArea", Bounds::positive());
+        const double css = Dictionary::readFile(app.path("constant/crusherKinematics"))
+                               .getScalar("closedSideSetting", Bounds::positive());
+        const TimeSeries machine = readTimeSeries(app.path("postProcessing/machine/0/machine.dat"));
+        const auto t = machine.values("Time");
+        const auto power = machine.values("power");
+        const auto fz = machine.values("forceZ");
+        const auto out = machine.values("massDischarged");
+        const auto fed = machine.values("massFed");
+        const auto inside = machine.values("massInside");
+        if (t.size() < 2) throw UserError("machine.dat has fewer than two rows; run bondedDemFoam longer");
+        std::vector<double> pressure(t.size()), throughput(t.size(), 0.0), steadyP, steadyPressure, steadyQ;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            pressure[i] = fz[i] / pistonArea;
+            if (i > 0 && t[i] > t[i - 1]) throughput[i] = (out[i] - out[i - 1]) / (t[i] - t[i - 1]);
+            if (t[i] >= steadyStart && i > 0) {
+                steadyP.push_back(power[i]);
+                steadyPressure.push_back(pressure[i]);
+                steadyQ.push_back(throughput[i]);
+            }
+        }
+        const Stat P = statistics(steadyP), p = statistics(steadyPressure), Q = statistics(steadyQ);
+        const double imbalance = fed.back() - inside.back() - out.back();
+
+        // Discharge PSD from the destructor's record (sieve size, mass per fragment).
+        PsdSummary psd;
+        PsdCurve curve;
+        int nFragments = 0;
+        const fs::path dischargeFile = app.path("postProcessing/discharge/0/discharge.dat");
+        if (fs::exists(dischargeFile)) {
+            const TimeSeries d = readTimeSeries(dischargeFile);
+            std::vector<double> sizes, masses;
+            const auto dt = d.values("Time"), ds = d.values("sieveSize"), dm = d.values("mass");
+            for (std::size_t i = 0; i < dt.size();
+                 ++i) {  // every fragment of the run (the record starts with the first discharge)
+                sizes.push_back(ds[i]);
+                masses.push_back(dm[i]);
+            }
+            nFragments = static_cast<int>(sizes.size());
+            if (!sizes.empty()) {
+                curve = cumulativePassing(sizes, masses);
+                psd = summarisePsd(curve, css);
+            }
+        }
+        const fs::path dir = app.path("postProcessing/crusherPost");
+        fs::create_directories(dir);
+        char text[2000];
+        std::snprintf(
+            text, sizeof(text),
+            "# crusherPost summary (steady window t >= %g s, %d rows)\n"
+            "powerMean_W\t%.6g\npowerSpread_W\t%.6g\n"
+            "pressureMean_Pa\t%.6g\npressureSpread_Pa\t%.6g\n"
+            "throughputMean_kg_s\t%.6g\nthroughputSpread_kg_s\t%.6g\nthroughputMean_t_h\t%.6g\n"
+            "massFed_kg\t%.9g\nmassInside_kg\t%.9g\nmassDischarged_kg\t%.9g\nmassImbalance_kg\t%.3g\n"
+            "fragmentsDischarged\t%d\nP50_m\t%.6g\nP80_m\t%.6g\nCSS_m\t%.6g\n",
+            steadyStart, P.n, P.mean, P.spread, p.mean, p.spread, Q.mean, Q.spread, 3.6 * Q.mean, fed.back(),
+            inside.back(), out.back(), imbalance, nFragments, psd.p50, psd.p80, css);
+        writeFileAtomically(dir / "summary.dat", [&](std::ostream& o) { o << text; });
+        std::printf("Steady window t >= %g s (%d rows of %zu)\n", steadyStart, P.n, t.size());
+        std::printf("Power draw        %10.4g kW   (spread %.3g kW)\n", 1e-3 * P.mean, 1e-3 * P.spread);
+        std::printf("Hydraulic press.  %10.4g MPa  (spread %.3g MPa; piston area %g m^2)\n", 1e-6 * p.mean,
+                    1e-6 * p.spread, pistonArea);
+        std::printf("Throughput        %10.4g t/h  (spread %.3g t/h)\n", 3.6 * Q.mean, 3.6 * Q.spread);
+        std::printf("Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg)\n",
+                    fed.back(), inside.back(), out.back(), imbalance);
+        if (nFragments > 0)
+            std::printf(
+                "Discharge PSD: %d fragments, P50 %.4g mm, P80 %.4g mm (CSS %.4g mm, P80 - CSS %+.3g mm)\n",
+                nFragments, 1e3 * psd.p50, 1e3 * psd.p80, 1e3 * css, 1e3 * (psd.p80 - css));
+        else
+            std::printf("Discharge PSD: nothing discharged yet\n");
+        if (!app.dryRun()) {
+            try {
+                plotSeries(dir / "power.png", "Power draw", "power [kW]", t, power, 1e-3, steadyStart);
+                plotSeries(dir / "pressure.png", "Hydraulic pressure", "pressure [MPa]", t, pressure, 1e-6,
+                           steadyStart);
+                plotSeries(dir / "throughput.png", "Throughput", "throughput [t/h]", t, throughput, 3.6,
+                           steadyStart);
+                if (!curve.empty()) {
+                    std::vector<std::vector<double>> rows;
+                    for (std::size_t i = 0; i < curve.size.size(); ++i)
+                        rows.push_back({1e3 * curve.size[i], 100 * curve.passing[i]});
+                    std::string g = stats::gnuplotDataBlock("psd", rows);
+                    g += "set title 'Discharge PSD'\nset xlabel 'sieve size [mm]'\nset ylabel 'passing [%]'\n"
+                         "set logscale x\nset grid\nset arrow from " +
+                         std::to_string(1e3 * css) + ", graph 0 to " + std::to_string(1e3 * css) +
+                         ", graph 1 nohead dt 2\nplot $psd using 1:2 with linespoints " +
+                         stats::seriesColour(0) + " title ''\n";
+                    stats::renderPng(g, dir / "psd.png");
+                }
+            } catch (const UserError& e) {
+                std::printf("Plots skipped: %s\n", e.what());
+            }
+        }
+        return 0;
+    });
+}

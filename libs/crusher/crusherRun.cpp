@@ -1,0 +1,363 @@
+#include "crusher/crusherRun.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/dictionary.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "core/timeControl.hpp"
+#include "crusher/destructor.hpp"
+#include "crusher/feedRock.hpp"
+#include "crusher/machineLoading.hpp"
+#include "demCase/demCase.hpp"
+#include "geometry/triSurface.hpp"
+#include "io/timeSeries.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
+
+namespace rockfrac {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+WallMotion wallMotion(const MantlePose& p)
+{
+    return {p.translation, quatFromRotationVector(p.rotation_vector), p.velocity, p.angular_velocity};
+}
+
+// Shapes of the inserted cells for VTK (body-frame polyhedra), kept in step with the model.
+void appendShapes(CellShapes& s, const InsertedRock& rock, const DemModel& model)
+{
+    if (s.cellVertexOffset.empty()) s.cellVertexOffset.assign(1, 0);
+    if (s.cellFaceOffset.empty()) s.cellFaceOffset.assign(1, 0);
+    if (s.faceVertexOffset.empty()) s.faceVertexOffset.assign(1, 0);
+    const VoronoiMesh& m = rock.mesh;
+    const Mat3 pose = rotationMatrix(rock.pose.orientation);
+    const CellArrays& cells = model.cells();
+    for (int local = 0; local < m.nCells(); ++local) {
+        const int c = rock.first_cell + local;
+        const Mat3 R = rotationMatrix(cells.orientation[c]);
+        const int vertex_base = s.cellVertexOffset.back();
+        for (int v = m.cellVertexOffset[local]; v < m.cellVertexOffset[local + 1]; ++v)
+            s.bodyVertices.push_back(
+                transposeTimes(R, rock.pose.translation + pose * m.vertices[v] - cells.position[c]));
+        s.cellVertexOffset.push_back(static_cast<int>(s.bodyVertices.size()));
+        for (int f = m.cellFaceOffset[local]; f < m.cellFaceOffset[local + 1]; ++f) {
+            for (int k = m.faceVertexOffset[f]; k < m.faceVertexOffset[f + 1]; ++k)
+                s.faceVertices.push_back(vertex_base + m.faceVertices[k]);
+            s.faceVertexOffset.push_back(static_cast<int>(s.faceVertices.size()));
+        }
+        s.cellFaceOffset.push_back(static_cast<int>(s.faceVertexOffset.size()) - 1);
+    }
+}
+
+void compactShapes(CellShapes& s, const std::vector<int>& new_index)
+{
+    CellShapes out;
+    out.cellVertexOffset.assign(1, 0);
+    out.cellFaceOffset.assign(1, 0);
+    out.faceVertexOffset.assign(1, 0);
+    for (std::size_t c = 0; c < new_index.size(); ++c) {
+        if (new_index[c] < 0) continue;
+        const int old_base = s.cellVertexOffset[c], new_base = out.cellVertexOffset.back();
+        out.bodyVertices.insert(out.bodyVertices.end(), s.bodyVertices.begin() + old_base,
+                                s.bodyVertices.begin() + s.cellVertexOffset[c + 1]);
+        out.cellVertexOffset.push_back(static_cast<int>(out.bodyVertices.size()));
+        for (int f = s.cellFaceOffset[c]; f < s.cellFaceOffset[c + 1]; ++f) {
+            for (int k = s.faceVertexOffset[f]; k < s.faceVertexOffset[f + 1]; ++k)
+                out.faceVertices.push_back(s.faceVertices[k] - old_base + new_base);
+            out.faceVertexOffset.push_back(static_cast<int>(out.faceVertices.size()));
+        }
+        out.cellFaceOffset.push_back(static_cast<int>(out.faceVertexOffset.size()) - 1);
+    }
+    s = std::move(out);
+}
+
+int addSurface(DemModel& model, const fs::path& stl, const WallMotion& motion)
+{
+    const TriSurface surface = readStl(stl);
+    return model.addTriSurface(surface.points, surface.triangles, motion);
+}
+
+}  // namespace
+
+struct CrusherRun::Impl {
+    const Application& app;
+    Dictionary controlDict;
+    TimeControl time;
+    DemParameters parameters;
+    MachineLoading loading;
+    std::unique_ptr<FeedFactory> factory;
+    std::unique_ptr<DemModel> model;
+    CellShapes shapes;
+    int mantle = -1, concave = -1, choke = -1;
+    bool chokeLowered = false;
+    long sampleInterval = 100;
+    double rayleighStep = 0.0;
+    CriticalTimeStep critical;
+    long step = 0;
+
+    // Bookkeeping.
+    double massDischarged = 0.0, mantleWork = 0.0;
+    int fragmentsDischarged = 0;
+    // Means over the steps since the last machine.dat row.
+    Vec3 sumForce, sumTorque;
+    double sumPower = 0.0;
+    long sampleSteps = 0;
+
+    explicit Impl(const Application& a)
+        : app(a),
+          controlDict(Dictionary::readFile(a.path("system/controlDict"))),
+          time(controlDict, a.casePath())
+    {
+        parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
+        loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
+        parameters.gravity = loading.gravity;
+        if (time.restarting())
+            throw UserError(controlDict.fileName() +
+                            ": a crusher run cannot restart yet (cells are inserted and removed); set "
+                            "startFrom startTime; startTime 0; and remove the time directories");
+        const VoronoiMesh rockMesh = readVoronoiMesh(loading.feed.rock_case);
+        factory = std::make_unique<FeedFactory>(loading.feed,
+                                                makeFeedRockTemplate(rockMesh, parameters.rock_density));
+        model = std::make_unique<DemModel>(parameters);
+        const MantlePose start = mantlePose(loading.machine.kinematics, 0.0);
+        mantle = addSurface(*model, loading.machine.mantle_stl, wallMotion(start));
+        concave = addSurface(*model, loading.machine.concave_stl, WallMotion{});
+        if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
+        chooseTimeStep();
+        if (controlDict.found("functions") && controlDict.subDict("functions").found("machine"))
+            sampleInterval = controlDict.subDict("functions")
+                                 .subDict("machine")
+                                 .getOrDefault<long>("writeInterval", sampleInterval);
+        if (sampleInterval < 1)
+            throw UserError(controlDict.fileName() + ": functions/machine/writeInterval must be >= 1");
+    }
+
+    // The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
+    void chooseTimeStep()
+    {
+        const DemModel probe(factory->smallestRock(), parameters);
+        rayleighStep = probe.rayleighTimeStep();
+        critical = probe.criticalTimeStep();
+        const int given = int(time.deltaTGiven()) + int(controlDict.found("rayleighFraction")) +
+                          int(controlDict.found("criticalFraction"));
+        if (given != 1)
+            throw UserError(controlDict.fileName() +
+                            ": give exactly one of 'deltaT' [s], 'rayleighFraction' or 'criticalFraction'");
+        if (controlDict.found("rayleighFraction"))
+            time.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
+        if (controlDict.found("criticalFraction"))
+            time.setDeltaT(controlDict.getScalar("criticalFraction", Bounds::closed(1e-9, 1)) *
+                           critical.value);
+        if (time.deltaT() > critical.value)
+            throw UserError(controlDict.fileName() + ": the time step " + std::to_string(time.deltaT()) +
+                            " s is above the largest stable step " + std::to_string(critical.value) +
+                            " s of the smallest feed rock; reduce deltaT or use criticalFraction");
+    }
+
+    double massInside() const
+    {
+        double m = 0.0;
+        for (double c : model->cells().mass) m += c;
+        return m;
+    }
+
+    // Machine state before a step: mantle pose, choke plane, feed.
+    void prepareStep()
+    {
+        const double t = model->time();
+        model->setWallMotion(mantle, wallMotion(mantlePose(loading.machine.kinematics, t)));
+        if (choke >= 0 && !chokeLowered && t >= loading.choke.duration) {
+            WallState w = model->wall(choke);
+            w.origin.z = loading.destructor.below - 1e3;  // lowered far below everything
+            model->setWallState(choke, w);
+            chokeLowered = true;
+        }
+        const long feedEvery = std::max(1L, std::lround(loading.feed.interval / time.deltaT()));
+        if (step % feedEvery == 0)
+            for (const InsertedRock& rock : factory->feed(*model, t)) appendShapes(shapes, rock, *model);
+    }
+
+    void afterStep(TimeSeriesWriter& discharge)
+    {
+        const double power = model->wallPower(mantle);
+        mantleWork += power * time.deltaT();
+        const Vec3 force = model->wallReaction(mantle);
+        const Vec3 origin = model->wall(mantle).origin;
+        sumForce += force;
+        sumTorque +=
+            model->wallReactionTorque(mantle) + cross(origin - loading.machine.kinematics.pivot, force);
+        sumPower += power;
+        ++sampleSteps;
+        if (step % loading.destructor.interval != 0) return;
+        const DestructorResult r = destroyBelow(*model, loading.destructor.below);
+        if (r.fragments.empty()) return;
+        compactShapes(shapes, r.new_index);
+        massDischarged += r.mass;
+        fragmentsDischarged += static_cast<int>(r.fragments.size());
+        for (const DischargedFragment& f : r.fragments)
+            discharge.append(
+                {f.time, double(f.n_cells), f.mass, f.volume, f.equivalent_diameter, f.sieve_size});
+    }
+
+    static std::vector<Column> machineColumns()
+    {
+        return {{"Time", "s"},        {"forceX", "N"},       {"forceY", "N"},          {"forceZ", "N"},
+                {"torqueX", "N m"},   {"torqueY", "N m"},    {"torqueZ", "N m"},       {"power", "W"},
+                {"massInside", "kg"}, {"massFed", "kg"},     {"massDischarged", "kg"}, {"cells", "-"},
+                {"rocksFed", "-"},    {"fragmentsOut", "-"}, {"brokenBonds", "-"},     {"mantleWork", "J"},
+                {"kinetic", "J"},     {"stored", "J"},       {"dissipated", "J"},      {"fracture", "J"},
+                {"exchanged", "J"},   {"gravityWork", "J"},  {"balanceError", "J"}};
+    }
+
+    std::vector<double> machineRow()
+    {
+        const double n = std::max<long>(1, sampleSteps);
+        const DemEnergies& e = model->energies();
+        std::vector<double> row{model->time(),
+                                sumForce.x / n,
+                                sumForce.y / n,
+                                sumForce.z / n,
+                                sumTorque.x / n,
+                                sumTorque.y / n,
+                                sumTorque.z / n,
+                                sumPower / n,
+                                massInside(),
+                                factory->massFed(),
+                                massDischarged,
+                                double(model->cells().size()),
+                                double(factory->rocksFed()),
+                                double(fragmentsDischarged),
+                                double(model->counters().bonds_broken),
+                                mantleWork,
+                                e.kinetic(),
+                                e.stored(),
+                                e.dissipated(),
+                                e.fracture,
+                                e.exchanged,
+                                e.gravity_work,
+                                e.balance() - model->initialBalance()};
+        sumForce = sumTorque = Vec3{};
+        sumPower = 0.0;
+        sampleSteps = 0;
+        return row;
+    }
+
+    void writeVtk()
+    {
+        if (model->cells().size() == 0) return;
+        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
+    }
+
+    std::string progressExtras() const
+    {
+        char buffer[200];
+        std::snprintf(buffer, sizeof(buffer), "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d",
+                      model->cells().size(), factory->massFed(), massDischarged,
+                      1e-3 * model->wallPower(mantle), model->counters().bonds_broken);
+        return buffer;
+    }
+};
+
+CrusherRun::CrusherRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
+CrusherRun::~CrusherRun() = default;
+
+void CrusherRun::printSetup() const
+{
+    const Impl& r = *impl_;
+    const FeedRockTemplate& rock = r.factory->rock();
+    const FeedSpec& f = r.loading.feed;
+    const MachineSpec& m = r.loading.machine;
+    std::printf(
+        "Machine: mantle gyrating about (%g %g %g) m, eccentric angle %.4f deg, %.4g rpm, spin fixed; "
+        "CSS %.1f mm, discharge at z = %.4g m\n",
+        m.kinematics.pivot.x, m.kinematics.pivot.y, m.kinematics.pivot.z,
+        180.0 / 3.14159265358979323846 * m.kinematics.eccentric_angle,
+        m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), 1e3 * m.closed_side_setting,
+        m.discharge_level);
+    std::printf(
+        "Feed rock %s: %d cells, %d bonds, sieve size %.4g mm, volume-equivalent diameter %.4g mm; "
+        "sizes %.4g-%.4g mm at %.4g kg/s (at most %.4g kg)\n",
+        f.rock_case.string().c_str(), rock.mesh.nCells(), rock.mesh.nBonds(), 1e3 * rock.sieve_size,
+        1e3 * rock.equivalent_diameter, 1e3 * f.size_min, 1e3 * f.size_max, f.mass_rate, f.total_mass);
+    if (r.loading.choke.enabled)
+        std::printf("Choke plane at z = %.4g m until t = %.4g s\n", r.loading.choke.level,
+                    r.loading.choke.duration);
+    std::printf("Destructor below z = %.4g m, checked every %ld steps\n", r.loading.destructor.below,
+                r.loading.destructor.interval);
+    std::printf(
+        "Time step %.4g s = %.3g x stable step %.4g s of the smallest rock (Rayleigh %.4g s); end time "
+        "%.4g s (%ld steps)\n",
+        r.time.deltaT(), r.time.deltaT() / r.critical.value, r.critical.value, r.rayleighStep,
+        r.time.endTime(), r.time.endStep());
+}
+
+int CrusherRun::execute()
+{
+    Impl& r = *impl_;
+    if (r.app.dryRun()) {
+        std::printf("Dry run: every input is valid; nothing run, nothing written.\n");
+        return exitSuccess;
+    }
+    installInterruptHandlers();
+    TimeSeriesWriter machine(r.app.casePath(), "machine", Impl::machineColumns());
+    TimeSeriesWriter discharge(r.app.casePath(), "discharge",
+                               {{"Time", "s"},
+                                {"cells", "-"},
+                                {"mass", "kg"},
+                                {"volume", "m^3"},
+                                {"equivalentDiameter", "m"},
+                                {"sieveSize", "m"}});
+    ProgressReporter progress(0.0, r.time.endTime());
+    const long endStep = r.time.endStep();
+    std::string reason = "end time reached";
+    int exitCode = exitSuccess;
+    const auto wallStart = std::chrono::steady_clock::now();
+    double cellSteps = 0.0;
+    while (r.step < endStep) {
+        r.prepareStep();
+        if (r.step == 0) {
+            r.model->evaluateForces(r.time.deltaT());
+            machine.append(r.machineRow());
+            r.writeVtk();
+        }
+        cellSteps += r.model->cells().size();
+        r.model->step(r.time.deltaT());
+        ++r.step;
+        const DemStatus& status = r.model->status();
+        if (!status.ok()) throw UserError("step " + std::to_string(r.step) + ": " + status.message());
+        r.afterStep(discharge);
+        if (r.step % r.sampleInterval == 0) machine.append(r.machineRow());
+        if (interrupted()) {
+            reason = "interrupted by a signal (a crusher run cannot restart yet)";
+            exitCode = interruptExitCode();
+        }
+        if (r.time.writeDue(r.step) || exitCode != exitSuccess || r.step == endStep) r.writeVtk();
+        if (exitCode != exitSuccess) break;
+        progress.update(r.step, r.model->time(), [&] { return r.progressExtras(); });
+    }
+    if (r.sampleSteps > 0) machine.append(r.machineRow());
+    progress.finish(r.step, r.model->time(), reason);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    const double inside = r.massInside(), fed = r.factory->massFed();
+    std::printf(
+        "Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg); %d rocks fed, %d "
+        "fragments discharged\n",
+        fed, inside, r.massDischarged, fed - inside - r.massDischarged, r.factory->rocksFed(),
+        r.fragmentsDischarged);
+    const DemEnergies& e = r.model->energies();
+    std::printf(
+        "Energy: mantle work %.5g J, gravity work %.5g J = kinetic %.5g + stored %.5g + dissipated %.5g "
+        "(fracture %.5g) + carried out %.5g J; balance error %.3g J\n",
+        r.mantleWork, e.gravity_work, e.kinetic(), e.stored(), e.dissipated(), e.fracture, e.exchanged,
+        e.balance() - r.model->initialBalance());
+    std::printf("Throughput of the solver: %.4g cell-steps/s (%.4g cell-steps in %.4g s wall)\n",
+                cellSteps / std::max(seconds, 1e-9), cellSteps, seconds);
+    return exitCode;
+}
+
+}  // namespace rockfrac

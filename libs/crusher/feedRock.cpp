@@ -1,0 +1,141 @@
+#include "crusher/feedRock.hpp"
+
+#include <cmath>
+
+#include "core/counterRandom.hpp"
+#include "core/error.hpp"
+#include "fragments/fragments.hpp"
+
+namespace rockfrac {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}
+
+VoronoiMesh scaleVoronoiMesh(const VoronoiMesh& mesh, double s, const Vec3& centre)
+{
+    if (!(s > 0.0)) throw UserError("scaleVoronoiMesh: the scale factor must be positive");
+    const double s2 = s * s, s3 = s2 * s, s5 = s3 * s2;
+    VoronoiMesh m = mesh;
+    auto place = [&](const Vec3& x) { return s * (x - centre); };
+    for (Vec3& x : m.seeds) x = place(x);
+    for (Vec3& x : m.centroids) x = place(x);
+    for (Vec3& x : m.vertices) x = place(x);
+    for (double& v : m.volumes) v *= s3;
+    for (Mat3& J : m.inertia)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) J(i, j) *= s5;
+    for (double& a : m.faceArea) a *= s2;
+    for (VoronoiBond& b : m.bonds) {
+        b.point = place(b.point);
+        b.lI *= s;
+        b.lJ *= s;
+        b.area *= s2;
+    }
+    m.pruningDistance *= s;
+    m.domainVolume *= s3;
+    m.dilationRadius *= s;
+    return m;
+}
+
+FeedRockTemplate makeFeedRockTemplate(const VoronoiMesh& mesh, double density)
+{
+    if (mesh.nCells() == 0) throw UserError("the feed rock has no cells; run voronoiMesh on it first");
+    Vec3 centre;
+    double volume = 0.0;
+    for (int c = 0; c < mesh.nCells(); ++c) {
+        centre += mesh.volumes[c] * mesh.centroids[c];
+        volume += mesh.volumes[c];
+    }
+    centre = (1.0 / volume) * centre;
+    FeedRockTemplate t;
+    t.mesh = scaleVoronoiMesh(mesh, 1.0, centre);
+    t.volume = volume;
+    // The whole rock is one intact fragment: its sizes as fragmentPSD measures them.
+    CellPoses poses;
+    poses.position = t.mesh.centroids;
+    poses.orientation = initialCellOrientations(t.mesh, density);
+    const FragmentAnalysis a =
+        analyseFragments(t.mesh, demBondCells(t.mesh), std::vector<std::uint8_t>(t.mesh.nBonds(), 0), poses,
+                         poses.orientation, density);
+    if (a.fragments.size() != 1)
+        throw UserError("the feed rock is not one bonded piece (" + std::to_string(a.fragments.size()) +
+                        " fragments); mesh a single rock");
+    t.sieve_size = a.fragments[0].sieve_size;
+    t.equivalent_diameter = a.fragments[0].equivalent_diameter;
+    for (const Vec3& v : t.mesh.vertices) t.reach = std::max(t.reach, norm(v));
+    t.reach += t.mesh.dilationRadius;
+    return t;
+}
+
+Quat randomOrientation(std::uint64_t seed, std::uint64_t stream, std::uint64_t first_counter)
+{
+    const double u1 = uniform01(seed, stream, first_counter);
+    const double u2 = uniform01(seed, stream, first_counter + 1);
+    const double u3 = uniform01(seed, stream, first_counter + 2);
+    const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+    return normalised(Quat{b * std::cos(2 * pi * u3), a * std::sin(2 * pi * u2), a * std::cos(2 * pi * u2),
+                           b * std::sin(2 * pi * u3)});
+}
+
+}  // namespace rockfrac
+
+namespace rockfrac {
+
+FeedFactory::FeedFactory(const FeedSpec& spec, FeedRockTemplate rock) : spec_(spec), rock_(std::move(rock)) {}
+
+VoronoiMesh FeedFactory::smallestRock() const
+{
+    return scaleVoronoiMesh(rock_.mesh, spec_.size_min / rock_.sieve_size, {});
+}
+
+bool FeedFactory::place(const DemModel& model, int k, double reach, Vec3& centre) const
+{
+    const CellArrays& cells = model.cells();
+    for (int a = 0; a < spec_.attempts; ++a) {
+        const std::uint64_t first = 4 + 3 * static_cast<std::uint64_t>(a);
+        const double z = spec_.z_min + (spec_.z_max - spec_.z_min) * uniform01(spec_.seed, k, first);
+        const double r2 =
+            spec_.r_min * spec_.r_min +
+            (spec_.r_max * spec_.r_max - spec_.r_min * spec_.r_min) * uniform01(spec_.seed, k, first + 1);
+        const double phi = 2.0 * pi * uniform01(spec_.seed, k, first + 2);
+        centre = {std::sqrt(r2) * std::cos(phi), std::sqrt(r2) * std::sin(phi), z};
+        bool clear = true;
+        for (int c = 0; c < cells.size() && clear; ++c) {
+            const double gap = reach + cells.bounding_radius[c];
+            clear = norm2(cells.position[c] - centre) > gap * gap;
+        }
+        if (clear) return true;
+    }
+    return false;
+}
+
+std::vector<InsertedRock> FeedFactory::feed(DemModel& model, double time)
+{
+    std::vector<InsertedRock> inserted;
+    double target = spec_.mass_rate * time;
+    if (spec_.total_mass > 0.0) target = std::min(target, spec_.total_mass);
+    while (mass_fed_ < target) {
+        const int k = rocks_fed_;
+        const double u = uniform01(spec_.seed, k, 0);
+        const double size = spec_.size_min + (spec_.size_max - spec_.size_min) * u;
+        const double s = size / rock_.sieve_size;
+        Vec3 centre;
+        if (!place(model, k, s * rock_.reach, centre)) break;
+        InsertedRock rock;
+        rock.index = k;
+        rock.size = size;
+        rock.mesh = scaleVoronoiMesh(rock_.mesh, s, {});
+        rock.pose.translation = centre;
+        rock.pose.orientation = randomOrientation(spec_.seed, k, 1);
+        rock.pose.velocity = spec_.velocity;
+        rock.first_cell = model.insertCells(rock.mesh, rock.pose);
+        for (int c = rock.first_cell; c < model.cells().size(); ++c) rock.mass += model.cells().mass[c];
+        mass_fed_ += rock.mass;
+        ++rocks_fed_;
+        inserted.push_back(std::move(rock));
+    }
+    return inserted;
+}
+
+}  // namespace rockfrac

@@ -1,0 +1,76 @@
+#pragma once
+// The feed of a crusher: copies of one bonded Voronoi rock (a voronoiMesh case),
+// scaled to a drawn size, turned to a random orientation (docs/theory-crusher.md).
+//
+//   FeedRockTemplate rock = makeFeedRockTemplate(readVoronoiMesh("feedRock"), density);
+//   VoronoiMesh big = scaleVoronoiMesh(rock.mesh, 0.075 / rock.sieve_size, {});
+//   model.insertCells(big, {position, randomOrientation(seed, k, 0), velocity, {}});
+#include <cstdint>
+#include <vector>
+
+#include "crusher/machineLoading.hpp"
+#include "dem/demModel.hpp"
+#include "dem/quat.hpp"
+#include "voronoi/voronoiMesh.hpp"
+
+namespace rockfrac {
+
+// The mesh scaled by s about `centre`, which goes to the origin: x' = s (x - centre).
+// Lengths (vertices, centroids, seeds, bond points, l_i, l_j, dilation radius and
+// pruning distance) scale with s, areas (faces, bond shares A/n) with s^2, volumes
+// with s^3 and the second moments of volume with s^5, so the result is the mesh a
+// tessellation of the scaled rock would give: masses and bond areas stay consistent
+// (bond parameters are stresses and energies per area). UserError for s <= 0.
+VoronoiMesh scaleVoronoiMesh(const VoronoiMesh& mesh, double s, const Vec3& centre);
+
+struct FeedRockTemplate {
+    VoronoiMesh mesh;         // centred: its centre of volume at the origin
+    double volume = 0.0;      // [m^3]
+    double sieve_size = 0.0;  // intermediate principal extent (libs/fragments) [m]
+    double equivalent_diameter = 0.0;
+    double reach = 0.0;  // largest vertex distance from the centre + r_d [m]
+};
+// The template rock as one intact fragment; UserError for an empty mesh.
+FeedRockTemplate makeFeedRockTemplate(const VoronoiMesh& mesh, double density);
+
+// A uniformly distributed orientation (Shoemake's method) from three draws of the
+// counter-based generator: (seed, stream, first_counter .. first_counter + 2).
+Quat randomOrientation(std::uint64_t seed, std::uint64_t stream, std::uint64_t first_counter);
+
+// One rock put into the model by the factory.
+struct InsertedRock {
+    int index = 0;       // rock number (its random stream)
+    int first_cell = 0;  // model cells [first_cell, first_cell + mesh.nCells())
+    double size = 0.0;   // drawn sieve size [m]
+    double mass = 0.0;   // sum of the new cells' masses in the model [kg]
+    VoronoiMesh mesh;    // the scaled rock, centred at the origin (mesh frame)
+    WallMotion pose;     // where it was put: x = translation + R x_mesh
+};
+
+// The feed factory: at each call, rocks are inserted until the fed mass reaches
+// mass_rate * t (and at most total_mass), each rock k drawn from its own stream k of
+// the counter-based generator under the case seed: size (draw 0), orientation
+// (draws 1-3), then per placement attempt a (draws 4 + 3a ..): height, radius and
+// azimuth in the feed region. A position is accepted when the rock's bounding sphere
+// clears every cell's bounding sphere; when every attempt fails the rock waits for
+// the next call (same draws, so the run stays reproducible).
+class FeedFactory {
+public:
+    FeedFactory(const FeedSpec& spec, FeedRockTemplate rock);
+    std::vector<InsertedRock> feed(DemModel& model, double time);
+    double massFed() const { return mass_fed_; }
+    int rocksFed() const { return rocks_fed_; }
+    const FeedRockTemplate& rock() const { return rock_; }
+    // The rock scaled to the smallest size of the range (for the time step).
+    VoronoiMesh smallestRock() const;
+
+private:
+    bool place(const DemModel& model, int k, double reach, Vec3& centre) const;
+
+    FeedSpec spec_;
+    FeedRockTemplate rock_;
+    double mass_fed_ = 0.0;
+    int rocks_fed_ = 0;
+};
+
+}  // namespace rockfrac
