@@ -13,11 +13,11 @@
 #include <cstring>
 #include <string>
 
+#include "core/dictionary.hpp"
 #include "core/random.hpp"
 #include "core/timeControl.hpp"
 #include "dem/demModel.hpp"
 #include "demCase/demCase.hpp"
-#include "core/dictionary.hpp"
 #include "voronoi/domain.hpp"
 #include "voronoi/tessellation.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
@@ -33,16 +33,18 @@ double secondsFor(DemModel& model, int steps, double dt)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void report(const char* what, int nCells, int nBonds, std::size_t bytes, int threads, int steps, double seconds)
+void report(const char* what, int nCells, int nBonds, std::size_t bytes, int threads, int steps,
+            double seconds)
 {
-    std::printf("%-28s %8d %6.1f %3d %7d %10.3f %12.4g %8.0f\n", what, nCells, 2.0 * nBonds / nCells, threads, steps,
-                seconds, static_cast<double>(nCells) * steps / seconds, static_cast<double>(bytes) / nCells);
+    std::printf("%-28s %8d %6.1f %3d %7d %10.3f %12.4g %8.0f\n", what, nCells, 2.0 * nBonds / nCells, threads,
+                steps, seconds, static_cast<double>(nCells) * steps / seconds,
+                static_cast<double>(bytes) / nCells);
 }
 
 void header()
 {
-    std::printf("%-28s %8s %6s %3s %7s %10s %12s %8s\n", "case", "cells", "b/cell", "thr", "steps", "wall [s]",
-                "cell-steps/s", "B/cell");
+    std::printf("%-28s %8s %6s %3s %7s %10s %12s %8s\n", "case", "cells", "b/cell", "thr", "steps",
+                "wall [s]", "cell-steps/s", "B/cell");
 }
 
 void intactBlock(int nCells, int steps)
@@ -97,9 +99,10 @@ void fromCase(const std::string& caseDir, int steps)
         const double dt = 0.5 * model.criticalTimeStep().value;
         double best = 1e300;
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
-        std::string label = "case t=" + std::string(name) + " (" + std::to_string(model.counters().bonds_broken) +
-                            " broken)";
-        report(label.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps, best);
+        std::string label =
+            "case t=" + std::string(name) + " (" + std::to_string(model.counters().bonds_broken) + " broken)";
+        report(label.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps,
+               best);
     }
 }
 

@@ -86,8 +86,8 @@ Application::Application(const AppInfo& info, int argc, char** argv) : info_(inf
                         (info_.minArgs == info_.maxArgs
                              ? std::to_string(info_.minArgs)
                              : std::to_string(info_.minArgs) + " to " + std::to_string(info_.maxArgs)) +
-                        " argument(s), got " + std::to_string(args_.size()) + "; usage: " + info_.name +
-                        " " + info_.usage);
+                        " argument(s), got " + std::to_string(args_.size()) + "; usage: " + info_.name + " " +
+                        info_.usage);
     }
     std::error_code ec;
     if (!std::filesystem::is_directory(case_, ec))
@@ -108,7 +108,8 @@ std::string Application::caseName() const
 std::string Application::option(const std::string& name) const
 {
     auto it = options_.find(name);
-    if (it == options_.end()) throw UserError("option '" + name + "' is required; see " + info_.name + " -help");
+    if (it == options_.end())
+        throw UserError("option '" + name + "' is required; see " + info_.name + " -help");
     return it->second;
 }
 
@@ -121,7 +122,8 @@ std::optional<std::string> Application::optionIf(const std::string& name) const
 
 void Application::printHelp() const
 {
-    std::cout << "Usage: " << info_.name << " " << info_.usage << "\n\n" << info_.description << "\n\nOptions:\n";
+    std::cout << "Usage: " << info_.name << " " << info_.usage << "\n\n"
+              << info_.description << "\n\nOptions:\n";
     auto print = [](const AppOption& o) {
         std::string left = "  " + o.name + (o.argName.empty() ? "" : " <" + o.argName + ">");
         if (left.size() < 26) left.resize(26, ' ');
@@ -147,8 +149,7 @@ void Application::printBanner() const
               << std::flush;
 }
 
-int runApplication(const AppInfo& info, int argc, char** argv,
-                   const std::function<int(Application&)>& body)
+int runApplication(const AppInfo& info, int argc, char** argv, const std::function<int(Application&)>& body)
 {
     try {
         Application app(info, argc, argv);

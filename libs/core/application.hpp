@@ -38,7 +38,7 @@ struct AppInfo {
     std::vector<AppOption> options;       // application-specific options
     int minArgs = 0;                      // positional arguments accepted
     int maxArgs = 0;
-    bool banner = true;                   // print the banner (utilities that print data say false)
+    bool banner = true;  // print the banner (utilities that print data say false)
 };
 
 class Application {
@@ -73,8 +73,7 @@ private:
 };
 
 // Parse arguments, print the banner, run body, map exceptions to exit codes.
-int runApplication(const AppInfo& info, int argc, char** argv,
-                   const std::function<int(Application&)>& body);
+int runApplication(const AppInfo& info, int argc, char** argv, const std::function<int(Application&)>& body);
 
 // Build identification shown in banners: version, git commit, build type.
 std::string buildString();

@@ -10,8 +10,7 @@ namespace rockfrac {
 
 // Write `path` through `writer`; creates parent directories. UserError naming
 // the file on any I/O failure (disk full, permissions); the old file is kept.
-void writeFileAtomically(const std::filesystem::path& path,
-                         const std::function<void(std::ostream&)>& writer);
+void writeFileAtomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& writer);
 
 // For writers that insist on a file name (VTK): call `writer(tmpName)` and then
 // rename tmpName over `path`. If writer throws or returns false, tmp is removed.

@@ -47,7 +47,7 @@ TimeControl::TimeControl(const Dictionary& d, const fs::path& caseDir) : case_(c
     if (deltaTGiven_) deltaT_ = d.getScalar("deltaT", Bounds::positive());
     writeControl_ = [&] {
         const std::string w = d.getWord("writeControl", {"timeStep", "runTime", "clockTime"});
-        return w == "timeStep" ? WriteControl::timeStep
+        return w == "timeStep"  ? WriteControl::timeStep
                : w == "runTime" ? WriteControl::runTime
                                 : WriteControl::clockTime;
     }();
@@ -67,16 +67,21 @@ TimeControl::TimeControl(const Dictionary& d, const fs::path& caseDir) : case_(c
     }
     restartDirExists_ = startTime_ > 0 && fs::is_directory(caseDir / timeName(startTime_));
     if (startTime_ > 0 && !restartDirExists_)
-        throw UserError(d.fileName() + ": startTime " + timeName(startTime_) +
-                        " has no time directory in the case; choose an existing time or startFrom latestTime");
+        throw UserError(
+            d.fileName() + ": startTime " + timeName(startTime_) +
+            " has no time directory in the case; choose an existing time or startFrom latestTime");
     if (startTime_ >= endTime_)
-        throw UserError(d.fileName() + ": the run starts at " + timeName(startTime_) + " s, at or after endTime " +
-                        timeName(endTime_) + " s; raise endTime to continue the run");
+        throw UserError(d.fileName() + ": the run starts at " + timeName(startTime_) +
+                        " s, at or after endTime " + timeName(endTime_) +
+                        " s; raise endTime to continue the run");
     written_ = existing;
     lastClockWrite_ = std::chrono::steady_clock::now();
 }
 
-long TimeControl::stepOf(double time) const { return static_cast<long>(std::llround(time / deltaT_)); }
+long TimeControl::stepOf(double time) const
+{
+    return static_cast<long>(std::llround(time / deltaT_));
+}
 
 bool TimeControl::writeDue(long step)
 {
@@ -88,7 +93,8 @@ bool TimeControl::writeDue(long step)
         case WriteControl::runTime: {
             // A multiple of writeInterval lies in (t_{n-1}, t_n].
             const double t1 = timeOf(step), t0 = timeOf(step - 1);
-            return std::floor(t1 / writeInterval_ * (1 + 1e-12)) > std::floor(t0 / writeInterval_ * (1 + 1e-12));
+            return std::floor(t1 / writeInterval_ * (1 + 1e-12)) >
+                   std::floor(t0 / writeInterval_ * (1 + 1e-12));
         }
         case WriteControl::clockTime: {
             const auto now = std::chrono::steady_clock::now();
@@ -107,7 +113,10 @@ std::string TimeControl::timeName(double time) const
     return buffer;
 }
 
-fs::path TimeControl::stagingDir(double time) const { return case_ / (".tmp." + timeName(time)); }
+fs::path TimeControl::stagingDir(double time) const
+{
+    return case_ / (".tmp." + timeName(time));
+}
 
 fs::path TimeControl::prepareStagingDir(double time) const
 {
@@ -160,7 +169,10 @@ void TimeControl::commitTimeDir(double time)
 
 namespace {
 std::atomic<int> receivedSignal{0};
-extern "C" void onSignal(int signal) { receivedSignal.store(signal); }
+extern "C" void onSignal(int signal)
+{
+    receivedSignal.store(signal);
+}
 }  // namespace
 
 void installInterruptHandlers()
@@ -169,8 +181,14 @@ void installInterruptHandlers()
     std::signal(SIGTERM, onSignal);
 }
 
-bool interrupted() { return receivedSignal.load() != 0; }
+bool interrupted()
+{
+    return receivedSignal.load() != 0;
+}
 
-int interruptExitCode() { return 128 + receivedSignal.load(); }
+int interruptExitCode()
+{
+    return 128 + receivedSignal.load();
+}
 
 }  // namespace rockfrac

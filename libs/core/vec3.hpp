@@ -23,28 +23,85 @@ struct Vec3 {
     RF_HD double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
     RF_HD double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 
-    RF_HD Vec3& operator+=(const Vec3& b) { x += b.x; y += b.y; z += b.z; return *this; }
-    RF_HD Vec3& operator-=(const Vec3& b) { x -= b.x; y -= b.y; z -= b.z; return *this; }
-    RF_HD Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
-    RF_HD Vec3& operator/=(double s) { x /= s; y /= s; z /= s; return *this; }
+    RF_HD Vec3& operator+=(const Vec3& b)
+    {
+        x += b.x;
+        y += b.y;
+        z += b.z;
+        return *this;
+    }
+    RF_HD Vec3& operator-=(const Vec3& b)
+    {
+        x -= b.x;
+        y -= b.y;
+        z -= b.z;
+        return *this;
+    }
+    RF_HD Vec3& operator*=(double s)
+    {
+        x *= s;
+        y *= s;
+        z *= s;
+        return *this;
+    }
+    RF_HD Vec3& operator/=(double s)
+    {
+        x /= s;
+        y /= s;
+        z /= s;
+        return *this;
+    }
 };
 
-RF_HD inline Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
-RF_HD inline Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
-RF_HD inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
-RF_HD inline Vec3 operator*(Vec3 a, double s) { return a *= s; }
-RF_HD inline Vec3 operator*(double s, Vec3 a) { return a *= s; }
-RF_HD inline Vec3 operator/(Vec3 a, double s) { return a /= s; }
-RF_HD inline bool operator==(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-RF_HD inline bool operator!=(const Vec3& a, const Vec3& b) { return !(a == b); }
+RF_HD inline Vec3 operator+(Vec3 a, const Vec3& b)
+{
+    return a += b;
+}
+RF_HD inline Vec3 operator-(Vec3 a, const Vec3& b)
+{
+    return a -= b;
+}
+RF_HD inline Vec3 operator-(const Vec3& a)
+{
+    return {-a.x, -a.y, -a.z};
+}
+RF_HD inline Vec3 operator*(Vec3 a, double s)
+{
+    return a *= s;
+}
+RF_HD inline Vec3 operator*(double s, Vec3 a)
+{
+    return a *= s;
+}
+RF_HD inline Vec3 operator/(Vec3 a, double s)
+{
+    return a /= s;
+}
+RF_HD inline bool operator==(const Vec3& a, const Vec3& b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+RF_HD inline bool operator!=(const Vec3& a, const Vec3& b)
+{
+    return !(a == b);
+}
 
-RF_HD inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+RF_HD inline double dot(const Vec3& a, const Vec3& b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 RF_HD inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-RF_HD inline double norm2(const Vec3& a) { return dot(a, a); }
-RF_HD inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+RF_HD inline double norm2(const Vec3& a)
+{
+    return dot(a, a);
+}
+RF_HD inline double norm(const Vec3& a)
+{
+    return std::sqrt(dot(a, a));
+}
 // Unit vector along a; the zero vector stays zero (no NaN from 0/0).
 RF_HD inline Vec3 normalised(const Vec3& a)
 {

@@ -413,14 +413,16 @@ RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const C
         triangle.n_vertices = 3;
         triangle.position = wall.origin;
         triangle.rotation = wall.rotation;
-        const Vec3 v0 = worldVertex(triangle, 0), v1 = worldVertex(triangle, 1), v2 = worldVertex(triangle, 2);
+        const Vec3 v0 = worldVertex(triangle, 0), v1 = worldVertex(triangle, 1),
+                   v2 = worldVertex(triangle, 2);
         const Vec3 area_normal = cross(v1 - v0, v2 - v0);
         if (!(norm2(area_normal) > 0.0)) continue;  // zero area: its edges belong to neighbours
         const Vec3 face_normal = side * normalised(area_normal);
         const GjkResult gjk = gjkDistance(triangle, core, v0 - core.position);
         ContactGeometry g;
         if (gjk.intersecting || gjk.distance <= 1e-9 * radius) {
-            if (norm(closestPointOnTriangle(core.position, v0, v1, v2) - core.position) > core_reach) continue;
+            if (norm(closestPointOnTriangle(core.position, v0, v1, v2) - core.position) > core_reach)
+                continue;
             g = supportGeometry(triangle, core, face_normal, 0.0, radius);
         } else {
             g.normal = (gjk.point_b - gjk.point_a) / gjk.distance;

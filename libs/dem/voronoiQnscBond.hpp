@@ -116,8 +116,8 @@ struct VoronoiQnscLaw {
                 // A bond broken in shear under compression loses its (undamaged)
                 // compressive energy with it: released, booked with the fracture.
                 if (normal_opening < 0.0)
-                    out.fracture_dissipation += 0.5 * in.bond_area * inverse_l * m.normal_modulus *
-                                                normal_opening * normal_opening;
+                    out.fracture_dissipation +=
+                        0.5 * in.bond_area * inverse_l * m.normal_modulus * normal_opening * normal_opening;
                 return out;
             }
         }

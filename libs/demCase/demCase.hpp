@@ -28,28 +28,28 @@ struct PlateSpec {
 
 struct Loading {
     PlateSpec lower, upper;
-    double startGap = 0.0;        // plate-to-specimen distance at the start [m]
-    Vec3 gravity;                 // [m/s^2]
-    double settlingTime = 0.0;    // plates at rest, gravity on, before loading [s]
-    double stopForceFraction = 0.0;   // stop after the peak once F < fraction * peak (0: off)
-    double stopDisplacement = 0.0;    // stop at this plate approach [m] (0: off)
-    double minPeakForce = 0.0;        // the peak must exceed this before the drop criterion applies [N]
+    double startGap = 0.0;           // plate-to-specimen distance at the start [m]
+    Vec3 gravity;                    // [m/s^2]
+    double settlingTime = 0.0;       // plates at rest, gravity on, before loading [s]
+    double stopForceFraction = 0.0;  // stop after the peak once F < fraction * peak (0: off)
+    double stopDisplacement = 0.0;   // stop at this plate approach [m] (0: off)
+    double minPeakForce = 0.0;       // the peak must exceed this before the drop criterion applies [N]
 };
 
 Loading readLoading(const Dictionary& loading);
 
 // Cell polyhedra in their body frames, for drawing cells as they move.
 struct CellShapes {
-    std::vector<int> cellVertexOffset;  // as VoronoiMesh
-    std::vector<Vec3> bodyVertices;     // body frame of each cell
+    std::vector<int> cellVertexOffset;                                // as VoronoiMesh
+    std::vector<Vec3> bodyVertices;                                   // body frame of each cell
     std::vector<int> cellFaceOffset, faceVertexOffset, faceVertices;  // faceVertices: global vertex ids
 };
 // Take the shapes from the mesh and the model's initial poses (call before any step).
 CellShapes captureCellShapes(const VoronoiMesh& mesh, const DemModel& model);
 
 // VTK output of the current state: cells (damage, velocity, id) and bonds (D).
-void writeDemVtk(const std::filesystem::path& caseDir, int index, const DemModel& model, const CellShapes& shapes,
-                 bool restarted);
+void writeDemVtk(const std::filesystem::path& caseDir, int index, const DemModel& model,
+                 const CellShapes& shapes, bool restarted);
 
 // Whole state (cells, bonds, contacts, walls, clock, energies) of a model.
 void writeDemState(const std::filesystem::path& file, const DemModel& model, long step, double peakForce,

@@ -112,7 +112,8 @@ ConvexHull generateRock(const RockShape& shape)
         const double phi = random.uniform(0.0, 2 * M_PI);
         const double rxy = std::sqrt(std::max(0.0, 1 - z * z));
         const double radius = 1.0 + shape.roughness * random.uniform(-1.0, 1.0);
-        points.push_back({a * radius * rxy * std::cos(phi), b * radius * rxy * std::sin(phi), c * radius * z});
+        points.push_back(
+            {a * radius * rxy * std::cos(phi), b * radius * rxy * std::sin(phi), c * radius * z});
     }
     ConvexHull hull = convexHull(points);
     const MassProperties props = massProperties(hull.surface);

@@ -9,8 +9,8 @@
 namespace rockfrac {
 
 struct ConvexHull {
-    TriSurface surface;            // triangulated hull, outward oriented
-    std::vector<HalfSpace> planes; // one per distinct facet plane (coplanar triangles merged)
+    TriSurface surface;             // triangulated hull, outward oriented
+    std::vector<HalfSpace> planes;  // one per distinct facet plane (coplanar triangles merged)
 };
 
 // UserError when the points are fewer than 4 or (nearly) coplanar.

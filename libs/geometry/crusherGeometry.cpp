@@ -167,7 +167,8 @@ TriSurface revolveProfileShaped(const Profile& profile, int nSegments, SurfaceFa
     for (const auto& p : profile) r_max = std::max(r_max, p.r);
     const auto ringCount = [&](double r) {
         if (r <= 0.0) return 1;
-        return std::max(3, std::min(nSegments, static_cast<int>(std::ceil(2.0 * nSegments * r / r_max - 1e-9))));
+        return std::max(3,
+                        std::min(nSegments, static_cast<int>(std::ceil(2.0 * nSegments * r / r_max - 1e-9))));
     };
     const auto spacing = [&](double r) {  // target circumferential spacing at r
         return 2.0 * pi * std::max(r, 0.5 * r_max) / nSegments;
@@ -191,7 +192,8 @@ TriSurface revolveProfileShaped(const Profile& profile, int nSegments, SurfaceFa
             const double target = steps[n_sub] * k / m;
             while (i < n_sub && steps[i + 1] < target) ++i;
             const double t =
-                (i + (steps[i + 1] > steps[i] ? (target - steps[i]) / (steps[i + 1] - steps[i]) : 0.0)) / n_sub;
+                (i + (steps[i + 1] > steps[i] ? (target - steps[i]) / (steps[i + 1] - steps[i]) : 0.0)) /
+                n_sub;
             rings.push_back({a.r + t * (b.r - a.r), a.z + t * (b.z - a.z)});
         }
     }

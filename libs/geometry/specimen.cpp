@@ -12,7 +12,10 @@ namespace rockfrac {
 
 namespace fs = std::filesystem;
 
-double Specimen::equivalentDiameter() const { return std::cbrt(6.0 * properties.volume / M_PI); }
+double Specimen::equivalentDiameter() const
+{
+    return std::cbrt(6.0 * properties.volume / M_PI);
+}
 
 namespace {
 
@@ -23,7 +26,7 @@ MassProperties discProperties(double diameter, double thickness, const Vec3& cen
     MassProperties p;
     p.volume = M_PI * r * r * t;
     p.centroid = centre;
-    const double axial = 0.5 * p.volume * r * r;                       // about y
+    const double axial = 0.5 * p.volume * r * r;                      // about y
     const double transverse = p.volume * (3 * r * r + t * t) / 12.0;  // about x and z
     p.inertia(0, 0) = transverse;
     p.inertia(1, 1) = axial;
@@ -120,8 +123,9 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
     transformSurface(scan, scale, rotation, translation);
     const double scanVolume = massProperties(scan).volume;
     if (!(scanVolume > 0))
-        throw UserError(file.string() + ": the scan encloses no volume (inward-facing triangles?); "
-                                        "flip its normals and export it again");
+        throw UserError(file.string() +
+                        ": the scan encloses no volume (inward-facing triangles?); "
+                        "flip its normals and export it again");
     Specimen s = fromHull(convexHull(scan.points), "stl");
     s.scan = std::move(scan);
     if (d.getOrDefault<bool>("placeOnPlate", false)) placeOnPlate(s.surface, s.scan);
@@ -181,7 +185,8 @@ void writeSpecimen(const fs::path& caseDir, const Specimen& s)
         } else {
             out << "\nconvexHull\n{\n";
             out << entryLine("hullToScanVolume", numberText(s.hullToScanVolume), 1);
-            out << "    // half-spaces n.x <= c as (nx ny nz c)\n    planes " << s.planes.size() << "\n    (\n";
+            out << "    // half-spaces n.x <= c as (nx ny nz c)\n    planes " << s.planes.size()
+                << "\n    (\n";
             for (const auto& p : s.planes)
                 out << "        (" << numberText(p.normal.x) << " " << numberText(p.normal.y) << " "
                     << numberText(p.normal.z) << " " << numberText(p.offset) << ")\n";

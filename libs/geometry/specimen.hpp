@@ -23,11 +23,11 @@ class Dictionary;
 struct Specimen {
     enum class Kind { disc, convexHull };
     Kind kind = Kind::disc;
-    std::string source;            // "disc", "stl" or "generated"
+    std::string source;  // "disc", "stl" or "generated"
 
-    TriSurface surface;            // what the meshes fill (disc facets or convex hull)
+    TriSurface surface;              // what the meshes fill (disc facets or convex hull)
     std::optional<TriSurface> scan;  // the user's scan itself (stl only)
-    MassProperties properties;     // of the filled solid (exact cylinder for a disc)
+    MassProperties properties;       // of the filled solid (exact cylinder for a disc)
 
     // disc
     double diameter = 0.0, thickness = 0.0;

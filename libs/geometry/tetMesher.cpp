@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 double tetQuality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
     const double volume = std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
-    const double sumL2 = norm2(b - a) + norm2(c - a) + norm2(d - a) + norm2(c - b) + norm2(d - b) + norm2(d - c);
+    const double sumL2 =
+        norm2(b - a) + norm2(c - a) + norm2(d - a) + norm2(c - b) + norm2(d - b) + norm2(d - c);
     return sumL2 > 0 ? 12.0 * std::pow(3.0 * volume, 2.0 / 3.0) / sumL2 : 0.0;
 }
 
@@ -106,7 +107,8 @@ TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request,
 {
     if (!(request.elementSize > 0) && request.elementCount <= 0)
         throw UserError("a tetrahedral mesh needs 'elementSize' (> 0) or 'elementCount' (> 0)");
-    double h = request.elementSize > 0 ? request.elementSize : sizeForCount(solidVolume, request.elementCount);
+    double h =
+        request.elementSize > 0 ? request.elementSize : sizeForCount(solidVolume, request.elementCount);
     TetMeshingResult result;
     const int passes = (request.elementSize > 0) ? 1 : 2;
     for (int pass = 0; pass < passes; ++pass) {
@@ -116,7 +118,8 @@ TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request,
         gmsh::option::setNumber("Mesh.Optimize", request.optimise > 0 ? 1 : 0);
         gmsh::model::mesh::generate(3);
         result = extractMesh();
-        if (result.tets.empty()) throw UserError("gmsh produced no tetrahedra; check that the surface is closed");
+        if (result.tets.empty())
+            throw UserError("gmsh produced no tetrahedra; check that the surface is closed");
         if (pass + 1 < passes) {
             h *= std::cbrt(static_cast<double>(result.tets.size()) / request.elementCount);
             continue;
@@ -161,18 +164,22 @@ TetMeshingResult meshSurfaceWithGmsh(const TriSurface& surface, const TetMeshReq
         // mesh cannot be coarser than its triangles.
         std::vector<int> pointTags(surface.points.size());
         for (std::size_t i = 0; i < surface.points.size(); ++i)
-            pointTags[i] = gmsh::model::geo::addPoint(surface.points[i].x, surface.points[i].y, surface.points[i].z);
+            pointTags[i] =
+                gmsh::model::geo::addPoint(surface.points[i].x, surface.points[i].y, surface.points[i].z);
         std::map<std::pair<int, int>, int> lineOf;  // (a, b) with a < b -> line tag from a to b
         auto edge = [&](int a, int b) {
             const auto key = std::make_pair(std::min(a, b), std::max(a, b));
             auto it = lineOf.find(key);
             if (it == lineOf.end())
-                it = lineOf.emplace(key, gmsh::model::geo::addLine(pointTags[key.first], pointTags[key.second])).first;
+                it = lineOf
+                         .emplace(key, gmsh::model::geo::addLine(pointTags[key.first], pointTags[key.second]))
+                         .first;
             return a < b ? it->second : -it->second;
         };
         std::vector<int> surfaceTags;
         for (const auto& t : surface.triangles) {
-            const int loop = gmsh::model::geo::addCurveLoop({edge(t[0], t[1]), edge(t[1], t[2]), edge(t[2], t[0])});
+            const int loop =
+                gmsh::model::geo::addCurveLoop({edge(t[0], t[1]), edge(t[1], t[2]), edge(t[2], t[0])});
             surfaceTags.push_back(gmsh::model::geo::addPlaneSurface({loop}));
         }
         const int shell = gmsh::model::geo::addSurfaceLoop(surfaceTags);

@@ -22,10 +22,10 @@ struct TetMeshRequest {
 
 struct TetMeshingResult {
     std::vector<Vec3> nodes;
-    std::vector<std::array<int, 4>> tets;  // positively oriented
-    double elementSize = 0.0;              // size used [m]
-    double volume = 0.0;                   // Σ tet volumes [m^3]
-    double solidVolume = 0.0;              // volume of the solid meshed [m^3]
+    std::vector<std::array<int, 4>> tets;        // positively oriented
+    double elementSize = 0.0;                    // size used [m]
+    double volume = 0.0;                         // Σ tet volumes [m^3]
+    double solidVolume = 0.0;                    // volume of the solid meshed [m^3]
     double minQuality = 0.0, meanQuality = 0.0;  // mean-ratio quality, 1 = regular tetrahedron
     double relativeVolumeError() const { return (volume - solidVolume) / solidVolume; }
 };

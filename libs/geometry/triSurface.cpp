@@ -38,16 +38,20 @@ private:
     std::map<std::tuple<double, double, double>, int> ids_;
 };
 
-bool finite(const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const Vec3& p)
+{
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
-void addTriangle(TriSurface& surface, VertexWelder& welder, const Vec3 (&v)[3], const fs::path& file, long facet)
+void addTriangle(TriSurface& surface, VertexWelder& welder, const Vec3 (&v)[3], const fs::path& file,
+                 long facet)
 {
     for (const auto& p : v)
         if (!finite(p))
             throw UserError(file.string() + ": facet " + std::to_string(facet) +
                             " has a non-finite coordinate (NaN or Inf); repair the scan and export it again");
-    surface.triangles.push_back({welder.index(v[0], surface), welder.index(v[1], surface),
-                                 welder.index(v[2], surface)});
+    surface.triangles.push_back(
+        {welder.index(v[0], surface), welder.index(v[1], surface), welder.index(v[2], surface)});
 }
 
 TriSurface readBinaryStl(const std::string& bytes, const fs::path& file)
@@ -111,8 +115,9 @@ TriSurface readAsciiStl(const std::string& text, const fs::path& file)
             v[nVertex++] = {xyz[0], xyz[1], xyz[2]};
         } else if (word == "endfacet") {
             if (nVertex != 3)
-                throw UserError(file.string() + ":" + std::to_string(lineNo) + ": facet " + std::to_string(facet) +
-                                " has " + std::to_string(nVertex) + " vertices; expected 3");
+                throw UserError(file.string() + ":" + std::to_string(lineNo) + ": facet " +
+                                std::to_string(facet) + " has " + std::to_string(nVertex) +
+                                " vertices; expected 3");
             addTriangle(surface, welder, v, file, facet);
         }
     }
@@ -160,7 +165,8 @@ void writeStl(const fs::path& file, const TriSurface& surface, const std::string
             const Vec3& c = surface.points[t[2]];
             const Vec3 n = normalised(cross(b - a, c - a));
             out << "  facet normal " << n.x << " " << n.y << " " << n.z << "\n    outer loop\n";
-            for (const Vec3* p : {&a, &b, &c}) out << "      vertex " << p->x << " " << p->y << " " << p->z << "\n";
+            for (const Vec3* p : {&a, &b, &c})
+                out << "      vertex " << p->x << " " << p->y << " " << p->z << "\n";
             out << "    endloop\n  endfacet\n";
         }
         out << "endsolid " << solidName << "\n";
@@ -252,7 +258,8 @@ MassProperties massProperties(const TriSurface& surface)
     // Inertia tensor I = ∫ (|r|² δ_ij − r_i r_j) dV about the centroid.
     double central[3][3];
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) central[i][j] = second[i][j] - volume * centroidLocal[i] * centroidLocal[j];
+        for (int j = 0; j < 3; ++j)
+            central[i][j] = second[i][j] - volume * centroidLocal[i] * centroidLocal[j];
     const double trace = central[0][0] + central[1][1] + central[2][2];
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) props.inertia(i, j) = (i == j ? trace : 0.0) - central[i][j];
@@ -289,9 +296,18 @@ Mat3 rotationFromDegrees(const Vec3& anglesDeg)
     const double cy = std::cos(k * anglesDeg.y), sy = std::sin(k * anglesDeg.y);
     const double cz = std::cos(k * anglesDeg.z), sz = std::sin(k * anglesDeg.z);
     Mat3 Rx = Mat3::identity(), Ry = Mat3::identity(), Rz = Mat3::identity();
-    Rx(1, 1) = cx; Rx(1, 2) = -sx; Rx(2, 1) = sx; Rx(2, 2) = cx;
-    Ry(0, 0) = cy; Ry(0, 2) = sy; Ry(2, 0) = -sy; Ry(2, 2) = cy;
-    Rz(0, 0) = cz; Rz(0, 1) = -sz; Rz(1, 0) = sz; Rz(1, 1) = cz;
+    Rx(1, 1) = cx;
+    Rx(1, 2) = -sx;
+    Rx(2, 1) = sx;
+    Rx(2, 2) = cx;
+    Ry(0, 0) = cy;
+    Ry(0, 2) = sy;
+    Ry(2, 0) = -sy;
+    Ry(2, 2) = cy;
+    Rz(0, 0) = cz;
+    Rz(0, 1) = -sz;
+    Rz(1, 0) = sz;
+    Rz(1, 1) = cz;
     return Rz * (Ry * Rx);
 }
 

@@ -36,13 +36,13 @@ struct SurfaceCheck {
 SurfaceCheck checkSurface(const TriSurface& surface);
 
 struct MassProperties {
-    double volume = 0.0;       // [m^3]
-    Vec3 centroid;             // [m]
-    Mat3 inertia;              // second moment of volume about the centroid [m^5]
-    Vec3 principalMoments;     // eigenvalues of inertia, ascending [m^5]
-    Mat3 principalAxes;        // columns: unit axes matching principalMoments
-    Vec3 boundsMin, boundsMax; // axis-aligned bounding box [m]
-    Vec3 principalExtents;     // extents along the principal axes, sorted descending [m]
+    double volume = 0.0;        // [m^3]
+    Vec3 centroid;              // [m]
+    Mat3 inertia;               // second moment of volume about the centroid [m^5]
+    Vec3 principalMoments;      // eigenvalues of inertia, ascending [m^5]
+    Mat3 principalAxes;         // columns: unit axes matching principalMoments
+    Vec3 boundsMin, boundsMax;  // axis-aligned bounding box [m]
+    Vec3 principalExtents;      // extents along the principal axes, sorted descending [m]
 };
 // By the divergence theorem over the triangles; the surface must be closed.
 MassProperties massProperties(const TriSurface& surface);

@@ -11,12 +11,13 @@ std::string foamFileHeader(const std::string& object, const std::string& note)
 {
     std::string text =
         "/*--------------------------------*- C++ -*----------------------------------*\\\n"
-        "  Written by " + buildString() + "\n";
+        "  Written by " +
+        buildString() + "\n";
     if (!note.empty()) text += "  " + note + "\n";
     text +=
         "\\*---------------------------------------------------------------------------*/\n"
-        "FoamFile\n{\n    format      ascii;\n    class       dictionary;\n    object      " + object +
-        ";\n}\n\n";
+        "FoamFile\n{\n    format      ascii;\n    class       dictionary;\n    object      " +
+        object + ";\n}\n\n";
     return text;
 }
 

@@ -56,7 +56,8 @@ public:
     std::vector<T> takeArray(std::uint64_t count, const std::string& name)
     {
         if (count > (bytes_.size() - pos_) / sizeof(T))
-            fail("array '" + name + "' announces " + std::to_string(count) + " values but the file is shorter");
+            fail("array '" + name + "' announces " + std::to_string(count) +
+                 " values but the file is shorter");
         std::vector<T> values(count);
         if (count) std::memcpy(values.data(), bytes_.data() + pos_, count * sizeof(T));
         pos_ += count * sizeof(T);
@@ -91,12 +92,18 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash)
     return hash;
 }
 
-void StateFile::put(const std::string& name, std::vector<double> values) { doubles_[name] = std::move(values); }
+void StateFile::put(const std::string& name, std::vector<double> values)
+{
+    doubles_[name] = std::move(values);
+}
 void StateFile::put(const std::string& name, std::vector<std::int64_t> values)
 {
     integers_[name] = std::move(values);
 }
-void StateFile::put(const std::string& name, std::vector<std::uint8_t> values) { bytes_[name] = std::move(values); }
+void StateFile::put(const std::string& name, std::vector<std::uint8_t> values)
+{
+    bytes_[name] = std::move(values);
+}
 void StateFile::put(const std::string& name, const std::vector<Vec3>& values)
 {
     std::vector<double> flat;
@@ -166,7 +173,8 @@ void StateFile::write(const fs::path& file) const
     for (const auto& [name, values] : integers_) appendArray(out, name, typeInt64, values);
     for (const auto& [name, values] : bytes_) appendArray(out, name, typeUint8, values);
     append(out, fnv1a(out.data(), out.size()));
-    writeFileAtomically(file, [&](std::ostream& s) { s.write(out.data(), static_cast<std::streamsize>(out.size())); });
+    writeFileAtomically(
+        file, [&](std::ostream& s) { s.write(out.data(), static_cast<std::streamsize>(out.size())); });
 }
 
 StateFile StateFile::read(const fs::path& file)
@@ -183,22 +191,31 @@ StateFile StateFile::parse(const std::string& bytes, const fs::path& file)
     if (r.takeString(sizeof(magic), "the magic string") != std::string(magic, sizeof(magic)))
         r.fail("not a rockfrac state file (wrong magic string)");
     const auto fileVersion = r.take<std::uint32_t>("the version");
-    if (fileVersion != version) r.fail("state file version " + std::to_string(fileVersion) + " is not supported");
+    if (fileVersion != version)
+        r.fail("state file version " + std::to_string(fileVersion) + " is not supported");
     const auto nArrays = r.take<std::uint32_t>("the array count");
     StateFile state;
     state.source_ = file;
     for (std::uint32_t a = 0; a < nArrays; ++a) {
         const auto nameLength = r.take<std::uint32_t>("an array name length");
-        if (nameLength == 0 || nameLength > 256) r.fail("array " + std::to_string(a) + " has an invalid name length");
+        if (nameLength == 0 || nameLength > 256)
+            r.fail("array " + std::to_string(a) + " has an invalid name length");
         const std::string name = r.takeString(nameLength, "an array name");
         const auto type = r.take<std::uint8_t>("an array type");
         const auto count = r.take<std::uint64_t>("an array length");
         if (state.has(name)) r.fail("array '" + name + "' appears twice");
         switch (type) {
-            case typeDouble: state.doubles_[name] = r.takeArray<double>(count, name); break;
-            case typeInt64: state.integers_[name] = r.takeArray<std::int64_t>(count, name); break;
-            case typeUint8: state.bytes_[name] = r.takeArray<std::uint8_t>(count, name); break;
-            default: r.fail("array '" + name + "' has unknown type code " + std::to_string(type));
+            case typeDouble:
+                state.doubles_[name] = r.takeArray<double>(count, name);
+                break;
+            case typeInt64:
+                state.integers_[name] = r.takeArray<std::int64_t>(count, name);
+                break;
+            case typeUint8:
+                state.bytes_[name] = r.takeArray<std::uint8_t>(count, name);
+                break;
+            default:
+                r.fail("array '" + name + "' has unknown type code " + std::to_string(type));
         }
     }
     const std::size_t checked = r.position();

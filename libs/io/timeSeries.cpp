@@ -143,8 +143,9 @@ TimeSeries readTimeSeries(const fs::path& file)
         series.rows.push_back(std::move(row));
     }
     if (series.names.empty())
-        throw UserError(file.string() + ": no '#' header line naming the columns; expected e.g. "
-                                        "'# Time [s]<TAB>force [N]'");
+        throw UserError(file.string() +
+                        ": no '#' header line naming the columns; expected e.g. "
+                        "'# Time [s]<TAB>force [N]'");
     return series;
 }
 

@@ -63,8 +63,8 @@ vtkSmartPointer<vtkDataArray> toVtkArray(const Field& field, std::size_t nItems,
 {
     if (field.values.size() != nItems * static_cast<std::size_t>(field.components))
         throw std::logic_error("field '" + field.name + "' for " + file.string() + " has " +
-                               std::to_string(field.values.size()) + " values for " +
-                               std::to_string(nItems) + " items");
+                               std::to_string(field.values.size()) + " values for " + std::to_string(nItems) +
+                               " items");
     vtkSmartPointer<vtkDataArray> array;
     if (field.isInteger)
         array = vtkSmartPointer<vtkIntArray>::New();
@@ -170,8 +170,8 @@ void writeLinesVtp(const fs::path& file, const std::vector<Vec3>& points,
     writeXml<vtkXMLPolyDataWriter>(file, poly.GetPointer());
 }
 
-void writePointsVtp(const fs::path& file, const std::vector<Vec3>& points, const std::vector<Field>& pointFields,
-                    double timeValue)
+void writePointsVtp(const fs::path& file, const std::vector<Vec3>& points,
+                    const std::vector<Field>& pointFields, double timeValue)
 {
     vtkNew<vtkPolyData> poly;
     poly->SetPoints(toVtkPoints(points));
@@ -202,8 +202,9 @@ void writeTrianglesVtp(const fs::path& file, const std::vector<Vec3>& points,
     writeXml<vtkXMLPolyDataWriter>(file, poly.GetPointer());
 }
 
-void writeTetsVtu(const fs::path& file, const std::vector<Vec3>& points, const std::vector<std::array<int, 4>>& tets,
-                  const std::vector<Field>& cellFields, const std::vector<Field>& pointFields, double timeValue)
+void writeTetsVtu(const fs::path& file, const std::vector<Vec3>& points,
+                  const std::vector<std::array<int, 4>>& tets, const std::vector<Field>& cellFields,
+                  const std::vector<Field>& pointFields, double timeValue)
 {
     vtkNew<vtkUnstructuredGrid> grid;
     grid->SetPoints(toVtkPoints(points));
@@ -236,9 +237,9 @@ SeriesFile::SeriesFile(fs::path seriesPath) : path_(std::move(seriesPath))
 
 void SeriesFile::truncateFrom(double time)
 {
-    entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                  [time](const auto& e) { return e.second >= time; }),
-                   entries_.end());
+    entries_.erase(
+        std::remove_if(entries_.begin(), entries_.end(), [time](const auto& e) { return e.second >= time; }),
+        entries_.end());
 }
 
 void SeriesFile::add(const std::string& fileName, double time)
@@ -253,8 +254,8 @@ void SeriesFile::write() const
         out << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
         out << std::setprecision(17);
         for (std::size_t i = 0; i < entries_.size(); ++i)
-            out << "    { \"name\": \"" << entries_[i].first << "\", \"time\" : " << entries_[i].second << " }"
-                << (i + 1 < entries_.size() ? "," : "") << "\n";
+            out << "    { \"name\": \"" << entries_[i].first << "\", \"time\" : " << entries_[i].second
+                << " }" << (i + 1 < entries_.size() ? "," : "") << "\n";
         out << "  ]\n}\n";
     });
 }

@@ -14,7 +14,6 @@
 
 namespace rockfrac {
 
-
 // An infinite circular cylinder: points within `radius` of the axis line.
 struct Cylinder {
     Vec3 axisPoint;

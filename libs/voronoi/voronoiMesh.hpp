@@ -19,31 +19,31 @@ namespace rockfrac {
 constexpr int boundaryFace = -1;
 
 struct VoronoiBond {
-    int cellI = -1;        // lower cell index
-    int cellJ = -1;        // higher cell index
-    int faceI = -1;        // global face index (into faceNeighbour etc.) on cell I
-    int faceJ = -1;        // the matching face on cell J
-    Vec3 point;            // the face vertex, where both anchor points start (d = 0)
-    Vec3 normalI;          // outward unit normal of cell I's face (cell J's is -normalI)
-    double lI = 0.0;       // distance from cell I's centroid to the face plane [m]
-    double lJ = 0.0;       // distance from cell J's centroid to the face plane [m]
-    double area = 0.0;     // A/n: the share of the face area this bond carries [m^2]
+    int cellI = -1;     // lower cell index
+    int cellJ = -1;     // higher cell index
+    int faceI = -1;     // global face index (into faceNeighbour etc.) on cell I
+    int faceJ = -1;     // the matching face on cell J
+    Vec3 point;         // the face vertex, where both anchor points start (d = 0)
+    Vec3 normalI;       // outward unit normal of cell I's face (cell J's is -normalI)
+    double lI = 0.0;    // distance from cell I's centroid to the face plane [m]
+    double lJ = 0.0;    // distance from cell J's centroid to the face plane [m]
+    double area = 0.0;  // A/n: the share of the face area this bond carries [m^2]
 };
 
 struct VoronoiMesh {
     static constexpr int formatVersion = 1;
 
     // Provenance of the tessellation.
-    std::uint64_t seed = 0;          // random seed of the seeding
-    double pruningDistance = 0.0;    // minimum distance between two seeds [m]
-    double domainVolume = 0.0;       // volume of the domain that was filled [m^3]
-    double dilationRadius = 0.0;     // radius of the sphere the cells are dilated by [m]
+    std::uint64_t seed = 0;        // random seed of the seeding
+    double pruningDistance = 0.0;  // minimum distance between two seeds [m]
+    double domainVolume = 0.0;     // volume of the domain that was filled [m^3]
+    double dilationRadius = 0.0;   // radius of the sphere the cells are dilated by [m]
 
     // Per cell.
-    std::vector<Vec3> seeds;         // generator points
-    std::vector<Vec3> centroids;     // centre of volume [m]
-    std::vector<double> volumes;     // [m^3]
-    std::vector<Mat3> inertia;       // second moment of volume about the centroid [m^5] (x density = inertia)
+    std::vector<Vec3> seeds;      // generator points
+    std::vector<Vec3> centroids;  // centre of volume [m]
+    std::vector<double> volumes;  // [m^3]
+    std::vector<Mat3> inertia;    // second moment of volume about the centroid [m^5] (x density = inertia)
 
     // Vertices of each cell, in global coordinates: cell c owns
     // vertices[cellVertexOffset[c] .. cellVertexOffset[c+1]).

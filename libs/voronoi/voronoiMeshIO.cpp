@@ -46,7 +46,8 @@ std::string displayName(const fs::path& caseDir, const char* file)
 // sees a half-written mesh file.
 void writeAtomically(const fs::path& path, const std::string& /*label*/, const char* data, std::size_t size)
 {
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(data, static_cast<std::streamsize>(size)); });
+    writeFileAtomically(path,
+                        [&](std::ostream& out) { out.write(data, static_cast<std::streamsize>(size)); });
 }
 
 Bytes readWholeFile(const fs::path& path, const std::string& label)

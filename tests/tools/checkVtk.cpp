@@ -70,8 +70,9 @@ double tetsVolume(vtkUnstructuredGrid* grid)
 int main(int argc, char** argv)
 {
     if (argc != 4 && argc != 7) {
-        std::fprintf(stderr, "usage: checkVtk <file> <polyhedra|tets|lines|triangles|points> <count> "
-                             "[volume <expected> <relTol>]\n");
+        std::fprintf(stderr,
+                     "usage: checkVtk <file> <polyhedra|tets|lines|triangles|points> <count> "
+                     "[volume <expected> <relTol>]\n");
         return 2;
     }
     const std::string file = argv[1], kind = argv[2];
@@ -97,19 +98,20 @@ int main(int argc, char** argv)
         reader->SetFileName(file.c_str());
         reader->Update();
         vtkPolyData* poly = reader->GetOutput();
-        count = kind == "lines" ? poly->GetNumberOfLines()
+        count = kind == "lines"       ? poly->GetNumberOfLines()
                 : kind == "triangles" ? poly->GetNumberOfPolys()
                                       : poly->GetNumberOfPoints();
     }
     if (count != expected) {
-        std::fprintf(stderr, "checkVtk: %s has %ld %s, expected %ld\n", file.c_str(), count, kind.c_str(), expected);
+        std::fprintf(stderr, "checkVtk: %s has %ld %s, expected %ld\n", file.c_str(), count, kind.c_str(),
+                     expected);
         return 1;
     }
     if (argc == 7) {
         const double want = std::atof(argv[5]), tol = std::atof(argv[6]);
         if (!(std::abs(volume - want) <= tol * std::abs(want))) {
-            std::fprintf(stderr, "checkVtk: %s volume %.8g, expected %.8g within %.3g %%\n", file.c_str(), volume,
-                         want, 100 * tol);
+            std::fprintf(stderr, "checkVtk: %s volume %.8g, expected %.8g within %.3g %%\n", file.c_str(),
+                         volume, want, 100 * tol);
             return 1;
         }
         std::printf("checkVtk: %s: %ld %s, volume %.8g (expected %.8g)\n", file.c_str(), count, kind.c_str(),

@@ -110,9 +110,9 @@ TEST_CASE("well-shaped surfaces of revolution: no slivers, no strips, same topol
     const Profile concave{{0.3846, 0.505}, {0.4276, 0.318}, {0.4759, 0.1321}, {0.5605, 0.0}};
     for (int n : {90, 360}) {
         for (const bool is_mantle : {true, false}) {
-            const TriSurface s = revolveProfileShaped(is_mantle ? mantle : concave, n,
-                                                      is_mantle ? SurfaceFacing::awayFromAxis
-                                                                : SurfaceFacing::towardsAxis);
+            const TriSurface s =
+                revolveProfileShaped(is_mantle ? mantle : concave, n,
+                                     is_mantle ? SurfaceFacing::awayFromAxis : SurfaceFacing::towardsAxis);
             const SurfaceCheck c = checkSurface(s);
             INFO("n " << n << (is_mantle ? " mantle" : " concave"));
             CHECK(c.nonManifoldEdges == 0);
@@ -139,7 +139,8 @@ TEST_CASE("well-shaped surfaces of revolution: no slivers, no strips, same topol
     }
     // Every point lies on the profile's surface of revolution.
     const TriSurface s = revolveProfileShaped(mantle, 90, SurfaceFacing::awayFromAxis);
-    for (const Vec3& p : s.points) CHECK(profileDistance({{std::hypot(p.x, p.y), p.z}, {std::hypot(p.x, p.y), p.z}}, mantle) < 1e-12);
+    for (const Vec3& p : s.points)
+        CHECK(profileDistance({{std::hypot(p.x, p.y), p.z}, {std::hypot(p.x, p.y), p.z}}, mantle) < 1e-12);
 }
 
 TEST_CASE("gyration: period of 290 rpm, rigid pose about the pivot", "[crusher]")

@@ -26,8 +26,8 @@ using namespace rockfrac;
 
 namespace {
 
-constexpr double cell = 0.01;   // box cell edge [m]
-constexpr double rd = 5e-4;     // dilation radius [m]
+constexpr double cell = 0.01;             // box cell edge [m]
+constexpr double rd = 5e-4;               // dilation radius [m]
 constexpr double half = 0.5 * cell - rd;  // core half edge
 
 // Nearest point of segment [a, b] to p.
@@ -76,7 +76,10 @@ struct Surface {
     std::vector<Vec3> points;
     std::vector<std::array<int, 3>> triangles;
     Vec3 corner(int t, int k) const { return points[triangles[t][k]]; }
-    Vec3 normal(int t) const { return normalised(cross(corner(t, 1) - corner(t, 0), corner(t, 2) - corner(t, 0))); }
+    Vec3 normal(int t) const
+    {
+        return normalised(cross(corner(t, 1) - corner(t, 0), corner(t, 2) - corner(t, 0)));
+    }
 };
 
 Surface fromTriSurface(const TriSurface& s)
@@ -130,20 +133,23 @@ Expected bruteForce(const Surface& s, const std::vector<Vec3>& core, const Vec3&
         for (int j = i + 1; j < 8; ++j)
             if (std::abs(norm(core[i] - core[j]) - 2.0 * half) < 1e-9) edges.push_back({i, j});
     for (int t = 0; t < static_cast<int>(s.triangles.size()); ++t) {
-        if (norm(trianglePoint(centre, s.corner(t, 0), s.corner(t, 1), s.corner(t, 2)) - centre) > 0.02) continue;
+        if (norm(trianglePoint(centre, s.corner(t, 0), s.corner(t, 1), s.corner(t, 2)) - centre) > 0.02)
+            continue;
         for (int k = 0; k < 3; ++k) {
             const Vec3 local = transposeTimes(R, s.corner(t, k) - centre);
             const Vec3 clamped{std::clamp(local.x, -half, half), std::clamp(local.y, -half, half),
                                std::clamp(local.z, -half, half)};
             e.hull_distance = std::min(e.hull_distance, norm(local - clamped));
             for (const auto& edge : edges)
-                e.hull_distance = std::min(e.hull_distance, segmentSegment(core[edge[0]], core[edge[1]], s.corner(t, k),
-                                                                           s.corner(t, (k + 1) % 3)));
+                e.hull_distance = std::min(
+                    e.hull_distance,
+                    segmentSegment(core[edge[0]], core[edge[1]], s.corner(t, k), s.corner(t, (k + 1) % 3)));
         }
     }
     if (e.touching == 0 && e.hull_distance < rd) {
         const double overlap = rd - e.hull_distance;
-        e.force = Vec3{(4.0 / 3.0) * modulus * std::sqrt(rd * overlap) * overlap, 0.0, 0.0};  // magnitude only
+        e.force =
+            Vec3{(4.0 / 3.0) * modulus * std::sqrt(rd * overlap) * overlap, 0.0, 0.0};  // magnitude only
     }
     if (e.hull_distance < 1e-9) e.skip = true;
     return e;
@@ -173,7 +179,8 @@ std::vector<Vec3> worldCore(const Vec3& centre, const Mat3& R)
 {
     std::vector<Vec3> core;
     for (int k = 0; k < 8; ++k)
-        core.push_back(centre + R * Vec3{(k & 1) ? half : -half, (k & 2) ? half : -half, (k & 4) ? half : -half});
+        core.push_back(centre +
+                       R * Vec3{(k & 1) ? half : -half, (k & 2) ? half : -half, (k & 4) ? half : -half});
     return core;
 }
 
@@ -183,7 +190,8 @@ void requireAxisAlignedCore(const DemModel& model)
     const CellArrays& cells = model.cells();
     REQUIRE(cells.core_vertex_offset[1] == 8);
     for (int v = 0; v < 8; ++v)
-        for (int d = 0; d < 3; ++d) REQUIRE(std::abs(cells.core_vertices[v][d]) == Approx(half).epsilon(1e-9));
+        for (int d = 0; d < 3; ++d)
+            REQUIRE(std::abs(cells.core_vertices[v][d]) == Approx(half).epsilon(1e-9));
 }
 
 }  // namespace
@@ -197,8 +205,10 @@ TEST_CASE("a cell near the coarse CH660 liners: wall force equals the brute-forc
         1.0 / ((1.0 - p.rock_poisson_ratio * p.rock_poisson_ratio) / p.rock_youngs_modulus +
                (1.0 - p.steel_poisson_ratio * p.steel_poisson_ratio) / p.steel_youngs_modulus);
     const int n_segments = 90;
-    const Surface mantle = fromTriSurface(revolveProfile(mantle_profile, n_segments, SurfaceFacing::awayFromAxis));
-    const Surface concave = fromTriSurface(revolveProfile(concave_profile, n_segments, SurfaceFacing::towardsAxis));
+    const Surface mantle =
+        fromTriSurface(revolveProfile(mantle_profile, n_segments, SurfaceFacing::awayFromAxis));
+    const Surface concave =
+        fromTriSurface(revolveProfile(concave_profile, n_segments, SurfaceFacing::towardsAxis));
     std::mt19937 random(2024);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     int touching = 0, edge_only = 0, clear = 0, skipped = 0;
@@ -219,8 +229,8 @@ TEST_CASE("a cell near the coarse CH660 liners: wall force equals the brute-forc
             const Vec3 on = s->corner(t, 0) + u * (s->corner(t, 1) - s->corner(t, 0)) +
                             v * (s->corner(t, 2) - s->corner(t, 0));
             const Vec3 n = s->normal(t);
-            const Quat q = quatFromRotationVector({6 * uniform(random) - 3, 6 * uniform(random) - 3,
-                                                   6 * uniform(random) - 3});
+            const Quat q = quatFromRotationVector(
+                {6 * uniform(random) - 3, 6 * uniform(random) - 3, 6 * uniform(random) - 3});
             const Mat3 R = rotationMatrix(q);
             double lowest = 1e300;
             for (const Vec3& x : worldCore({}, R)) lowest = std::min(lowest, dot(x, n));
@@ -236,8 +246,8 @@ TEST_CASE("a cell near the coarse CH660 liners: wall force equals the brute-forc
             model.setCellVelocity(0, {}, {});
             model.evaluateForces(1e-7);
             const Vec3 f = model.cells().force[0];
-            INFO("surface " << (s == &mantle ? "mantle" : "concave") << " sample " << sample << " triangle " << t
-                            << " gap " << band << " touching " << e.touching << " hull distance "
+            INFO("surface " << (s == &mantle ? "mantle" : "concave") << " sample " << sample << " triangle "
+                            << t << " gap " << band << " touching " << e.touching << " hull distance "
                             << e.hull_distance << " force " << f.x << " " << f.y << " " << f.z << " expected "
                             << e.force.x << " " << e.force.y << " " << e.force.z);
             if (e.touching > 0) {
@@ -252,7 +262,8 @@ TEST_CASE("a cell near the coarse CH660 liners: wall force equals the brute-forc
             }
         }
     }
-    INFO("touching " << touching << " edge only " << edge_only << " clear " << clear << " skipped " << skipped);
+    INFO("touching " << touching << " edge only " << edge_only << " clear " << clear << " skipped "
+                     << skipped);
     CHECK(touching > 150);
     CHECK(clear > 100);
     CHECK(skipped < 60);
@@ -264,7 +275,8 @@ TEST_CASE("GJK between a core and long thin triangles and slivers against brute 
     std::mt19937 random(7);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const std::array<std::array<Vec3, 3>, 2> triangles{
-        std::array<Vec3, 3>{Vec3{0.45, 0.0, 0.0}, Vec3{0.45 * std::cos(0.01745), 0.45 * std::sin(0.01745), 0.0},
+        std::array<Vec3, 3>{Vec3{0.45, 0.0, 0.0},
+                            Vec3{0.45 * std::cos(0.01745), 0.45 * std::sin(0.01745), 0.0},
                             Vec3{0.0, 0.0, 0.002}},
         std::array<Vec3, 3>{Vec3{0.0, 0.0, 0.0}, Vec3{0.12, 0.0, -0.02},
                             Vec3{0.12 * std::cos(0.0698), 0.12 * std::sin(0.0698), -0.02}}};
@@ -277,11 +289,13 @@ TEST_CASE("GJK between a core and long thin triangles and slivers against brute 
         const double along = 0.5 * (uniform(random) + 1.0);
         const Vec3 on = tri[0] + along * (tri[1] - tri[0]) + (1.0 - along) * 0.97 * (tri[2] - tri[0]) * 0.5;
         const Vec3 centre = on + Vec3{0.01 * uniform(random), 0.01 * uniform(random), 0.01 * uniform(random)};
-        const Mat3 R = rotationMatrix(quatFromRotationVector({3 * uniform(random), 3 * uniform(random), 3 * uniform(random)}));
+        const Mat3 R = rotationMatrix(
+            quatFromRotationVector({3 * uniform(random), 3 * uniform(random), 3 * uniform(random)}));
         const std::vector<Vec3> core = worldCore(centre, R);
         const Expected e = bruteForce(s, core, centre, R, 1.0);
         std::vector<Vec3> local;
-        for (int k = 0; k < 8; ++k) local.push_back(Vec3{(k & 1) ? half : -half, (k & 2) ? half : -half, (k & 4) ? half : -half});
+        for (int k = 0; k < 8; ++k)
+            local.push_back(Vec3{(k & 1) ? half : -half, (k & 2) ? half : -half, (k & 4) ? half : -half});
         ConvexVertexSet a, b;
         a.vertices = tri.data();
         a.n_vertices = 3;

@@ -41,7 +41,8 @@ TEST_CASE("generated rocks have the requested volume and are reproducible", "[ge
     CHECK(p.volume == Approx(82.7e-6).epsilon(1e-12));
     CHECK(checkSurface(a.surface).watertight());
     REQUIRE(a.surface.points.size() == b.surface.points.size());
-    for (std::size_t i = 0; i < a.surface.points.size(); ++i) CHECK(a.surface.points[i] == b.surface.points[i]);
+    for (std::size_t i = 0; i < a.surface.points.size(); ++i)
+        CHECK(a.surface.points[i] == b.surface.points[i]);
 
     // Shape ratios follow the request roughly (the roughness scatters them).
     const double elongation = p.principalExtents.y / p.principalExtents.x;

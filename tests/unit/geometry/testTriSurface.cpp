@@ -17,7 +17,8 @@ TriSurface cube(double a = 1.0)
 {
     TriSurface s;
     for (int i = 0; i < 8; ++i) s.points.push_back({a * (i & 1), a * ((i >> 1) & 1), a * ((i >> 2) & 1)});
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (const auto& q : quads) {
         s.triangles.push_back({q[0], q[1], q[2]});
         s.triangles.push_back({q[0], q[2], q[3]});
@@ -91,8 +92,8 @@ TEST_CASE("binary STL is read and a truncated one refused", "[geometry]")
 
     const fs::path truncated = scratch("truncated.stl");
     writeBinaryStl(truncated, cube(), 20);  // announces more facets than it holds
-    CHECK_THROWS_WITH(readStl(truncated), Catch::Contains("truncated binary STL") &&
-                                              Catch::Contains("truncated.stl"));
+    CHECK_THROWS_WITH(readStl(truncated),
+                      Catch::Contains("truncated binary STL") && Catch::Contains("truncated.stl"));
 }
 
 TEST_CASE("bad STL input gives one clear error", "[geometry]")

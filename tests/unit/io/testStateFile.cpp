@@ -21,7 +21,10 @@ std::string slurp(const fs::path& f)
     std::ifstream in(f, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
-void spit(const fs::path& f, const std::string& s) { std::ofstream(f, std::ios::binary) << s; }
+void spit(const fs::path& f, const std::string& s)
+{
+    std::ofstream(f, std::ios::binary) << s;
+}
 }  // namespace
 
 TEST_CASE("state round trip is bit-exact", "[io]")
@@ -54,8 +57,8 @@ TEST_CASE("corrupt state files are refused with the file named", "[io]")
 
     const fs::path bad = scratch("bad");
     spit(bad, good.substr(0, good.size() / 2));
-    CHECK_THROWS_WITH(StateFile::read(bad), Catch::Contains("bad") && Catch::Contains("truncated") ||
-                                                Catch::Contains("shorter"));
+    CHECK_THROWS_WITH(StateFile::read(bad),
+                      Catch::Contains("bad") && Catch::Contains("truncated") || Catch::Contains("shorter"));
     std::string flipped = good;
     flipped[good.size() / 2] ^= 0x10;
     spit(bad, flipped);

@@ -31,12 +31,14 @@ fs::path scratch(const std::string& name)
 PolyhedronSet twoCubes()
 {
     PolyhedronSet s;
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     s.cellFaceOffset.push_back(0);
     s.faceVertexOffset.push_back(0);
     for (int c = 0; c < 2; ++c) {
         const int base = static_cast<int>(s.points.size());
-        for (int i = 0; i < 8; ++i) s.points.push_back({1.0 * (i & 1) + c, 1.0 * ((i >> 1) & 1), 1.0 * ((i >> 2) & 1)});
+        for (int i = 0; i < 8; ++i)
+            s.points.push_back({1.0 * (i & 1) + c, 1.0 * ((i >> 1) & 1), 1.0 * ((i >> 2) & 1)});
         for (const auto& q : quads) {
             for (int k : q) s.faceVertices.push_back(base + k);
             s.faceVertexOffset.push_back(static_cast<int>(s.faceVertices.size()));
@@ -51,8 +53,8 @@ PolyhedronSet twoCubes()
 TEST_CASE("polyhedra round trip through VTK's reader", "[io]")
 {
     const fs::path file = scratch("cells.vtu");
-    writePolyhedraVtu(file, twoCubes(), {Field::scalar("volume", {1.0, 1.0}), Field::integer("cellId", {0, 1})},
-                      0.25);
+    writePolyhedraVtu(file, twoCubes(),
+                      {Field::scalar("volume", {1.0, 1.0}), Field::integer("cellId", {0, 1})}, 0.25);
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(file.string().c_str());
     reader->Update();
@@ -87,8 +89,8 @@ TEST_CASE("lines round trip with cell and point fields", "[io]")
 TEST_CASE("tetrahedra round trip", "[io]")
 {
     const fs::path file = scratch("tets.vtu");
-    writeTetsVtu(file, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}}, {Field::scalar("D1", {1.0})},
-                 {}, 0.0);
+    writeTetsVtu(file, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}},
+                 {Field::scalar("D1", {1.0})}, {}, 0.0);
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(file.string().c_str());
     reader->Update();
@@ -97,8 +99,8 @@ TEST_CASE("tetrahedra round trip", "[io]")
 
 TEST_CASE("a field of the wrong size is a programming error", "[io]")
 {
-    CHECK_THROWS(writeTetsVtu(scratch("bad.vtu"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 1, 2, 3}},
-                              {Field::scalar("D1", {1.0, 2.0})}, {}, 0.0));
+    CHECK_THROWS(writeTetsVtu(scratch("bad.vtu"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                              {{0, 1, 2, 3}}, {Field::scalar("D1", {1.0, 2.0})}, {}, 0.0));
 }
 
 TEST_CASE("series file continues after a restart", "[io]")

@@ -44,8 +44,8 @@ void report(const Specimen& s)
     std::printf("  principal second moments of volume (%.4g %.4g %.4g) m^5\n", p.principalMoments.x,
                 p.principalMoments.y, p.principalMoments.z);
     if (s.kind == Specimen::Kind::convexHull)
-        std::printf("  convex hull: %zu planes, %zu triangles%s\n", s.planes.size(), s.surface.triangles.size(),
-                    s.scan ? "" : "");
+        std::printf("  convex hull: %zu planes, %zu triangles%s\n", s.planes.size(),
+                    s.surface.triangles.size(), s.scan ? "" : "");
     if (s.scan) std::printf("  hull/scan volume ratio %.4f\n", s.hullToScanVolume);
 }
 
@@ -72,7 +72,8 @@ void makeTetMesh(const Application& app, const Specimen& s, const TetMeshRequest
     quality.reserve(mesh.tets.size());
     for (const auto& t : mesh.tets)
         quality.push_back(tetQuality(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]));
-    writeTetsVtu(app.path("VTK/feMesh.vtu"), mesh.nodes, mesh.tets, {Field::scalar("quality", quality)}, {}, 0.0);
+    writeTetsVtu(app.path("VTK/feMesh.vtu"), mesh.nodes, mesh.tets, {Field::scalar("quality", quality)}, {},
+                 0.0);
     std::printf("Tetrahedral mesh: %zu tets, %zu nodes, element size %.3g mm\n", mesh.tets.size(),
                 mesh.nodes.size(), 1e3 * mesh.elementSize);
     std::printf("  volume %.6g m^3, error %+.3f %% of the solid; quality min %.3f mean %.3f\n", mesh.volume,
@@ -98,7 +99,8 @@ int main(int argc, char** argv)
         writeStl(app.path("constant/triSurface/specimen.stl"), specimen.surface, "specimen");
         if (specimen.scan) writeStl(app.path("constant/triSurface/scan.stl"), *specimen.scan, "scan");
         writeSpecimen(app.casePath(), specimen);
-        writeTrianglesVtp(app.path("VTK/specimen.vtp"), specimen.surface.points, specimen.surface.triangles, 0.0);
+        writeTrianglesVtp(app.path("VTK/specimen.vtp"), specimen.surface.points, specimen.surface.triangles,
+                          0.0);
         if (tetRequest) makeTetMesh(app, specimen, *tetRequest);
         std::printf("End: specimen written to %s\n", app.path("constant").string().c_str());
         return 0;

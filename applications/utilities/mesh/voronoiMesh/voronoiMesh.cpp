@@ -128,10 +128,11 @@ int main(int argc, char** argv)
         double volume = 0;
         for (double v : mesh.volumes) volume += v;
         const double volumeError = (volume - domain.volume()) / domain.volume();
-        std::printf("voronoiMesh: %d cells, mean size %.4g mm, %d bonds, volume error %+.3g %%, "
-                    "meso constant %.4g m^3, dilation radius %.4g mm\n",
-                    mesh.nCells(), 1e3 * meanCellSize(mesh), mesh.nBonds(), 100 * volumeError,
-                    volume / mesh.nCells(), 1e3 * mesh.dilationRadius);
+        std::printf(
+            "voronoiMesh: %d cells, mean size %.4g mm, %d bonds, volume error %+.3g %%, "
+            "meso constant %.4g m^3, dilation radius %.4g mm\n",
+            mesh.nCells(), 1e3 * meanCellSize(mesh), mesh.nBonds(), 100 * volumeError, volume / mesh.nCells(),
+            1e3 * mesh.dilationRadius);
         if (app.dryRun()) {
             std::printf("Dry run: nothing written.\n");
             return 0;

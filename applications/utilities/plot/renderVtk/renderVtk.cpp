@@ -17,15 +17,15 @@
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkPolyData.h>
 #include <vtkTextProperty.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -115,9 +115,13 @@ int main(int argc, char** argv)
             vtkDataArray* array = cellArray ? cellArray : pointArray;
             double range[2];
             array->GetRange(range, array->GetNumberOfComponents() > 1 ? -1 : 0);
-            if (const auto given = app.optionIf("-range")) std::sscanf(given->c_str(), "%lf %lf", &range[0], &range[1]);
+            if (const auto given = app.optionIf("-range"))
+                std::sscanf(given->c_str(), "%lf %lf", &range[0], &range[1]);
             mapper->ScalarVisibilityOn();
-            if (cellArray) mapper->SetScalarModeToUseCellFieldData(); else mapper->SetScalarModeToUsePointFieldData();
+            if (cellArray)
+                mapper->SetScalarModeToUseCellFieldData();
+            else
+                mapper->SetScalarModeToUsePointFieldData();
             mapper->SelectColorArray(field->c_str());
             if (array->GetNumberOfComponents() > 1) colours->SetVectorModeToMagnitude();
             mapper->SetScalarRange(range);
@@ -148,11 +152,20 @@ int main(int argc, char** argv)
         const std::string view = app.optionIf("-view").value_or("y");
         vtkCamera* camera = renderer->GetActiveCamera();
         camera->SetFocalPoint(0, 0, 0);
-        if (view == "x") { camera->SetPosition(1, 0, 0); camera->SetViewUp(0, 0, 1); }
-        else if (view == "z") { camera->SetPosition(0, 0, 1); camera->SetViewUp(0, 1, 0); }
-        else if (view == "y") { camera->SetPosition(0, -1, 0); camera->SetViewUp(0, 0, 1); }
-        else if (view == "iso") { camera->SetPosition(1, -1.2, 0.8); camera->SetViewUp(0, 0, 1); }
-        else throw UserError("-view must be x, y, z or iso, not '" + view + "'");
+        if (view == "x") {
+            camera->SetPosition(1, 0, 0);
+            camera->SetViewUp(0, 0, 1);
+        } else if (view == "z") {
+            camera->SetPosition(0, 0, 1);
+            camera->SetViewUp(0, 1, 0);
+        } else if (view == "y") {
+            camera->SetPosition(0, -1, 0);
+            camera->SetViewUp(0, 0, 1);
+        } else if (view == "iso") {
+            camera->SetPosition(1, -1.2, 0.8);
+            camera->SetViewUp(0, 0, 1);
+        } else
+            throw UserError("-view must be x, y, z or iso, not '" + view + "'");
         renderer->ResetCamera();
         camera->Zoom(1.05);
 
