@@ -22,7 +22,8 @@ if(ROCKFRAC_SANITIZE)
   endif()
 endif()
 # Test environment for sanitized builds: third-party leaks are suppressed (not ours).
-set(ROCKFRAC_SANITIZER_ENV "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp")
+set(ROCKFRAC_SANITIZER_ENV
+  "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp:print_suppressions=0")
 
 # rockfrac_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
 # Creates target rockfrac_<name> with alias rockfrac::<name>; include root is libs/.
