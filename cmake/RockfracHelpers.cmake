@@ -21,6 +21,9 @@ if(ROCKFRAC_SANITIZE)
     add_compile_options(-Wno-maybe-uninitialized)
   endif()
 endif()
+# Test environment for sanitized builds: third-party leaks are suppressed (not ours).
+set(ROCKFRAC_SANITIZER_ENV
+  "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp:print_suppressions=0")
 
 # rockfrac_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
 # Creates target rockfrac_<name> with alias rockfrac::<name>; include root is libs/.
@@ -57,7 +60,7 @@ function(rockfrac_add_unit_test name)
   rockfrac_target_options(test_${name})
   add_test(NAME ${name} COMMAND test_${name})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}"
-    ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin")
+    ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin;${ROCKFRAC_SANITIZER_ENV}")
 endfunction()
 
 # rockfrac_add_case_test(<name> SCRIPT <file.sh> [LABELS ...] [TIMEOUT s])
@@ -74,7 +77,7 @@ function(rockfrac_add_case_test name)
   add_test(NAME ${name}
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/${A_SCRIPT} ${work})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}" TIMEOUT ${A_TIMEOUT}
-    ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE")
+    ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;${ROCKFRAC_SANITIZER_ENV}")
 endfunction()
 
 # Add every immediate or nested subdirectory of <dir> that has a CMakeLists.txt,
