@@ -6,6 +6,8 @@
 // a mesh must be reproducible from (domain, nCells, pd, seed) alone.
 #include <cstdint>
 
+#include "core/random.hpp"
+
 namespace rockfrac {
 
 class RandomStream {
@@ -13,13 +15,8 @@ public:
     explicit RandomStream(std::uint64_t seed)
     {
         // SplitMix64 spreads any seed (even 0) over the 256-bit state.
-        for (std::uint64_t& word : state_) {
-            seed += 0x9e3779b97f4a7c15ULL;
-            std::uint64_t z = seed;
-            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-            word = z ^ (z >> 31);
-        }
+        SplitMix64 spreader(seed);
+        for (std::uint64_t& word : state_) word = spreader.next();
     }
 
     // Next 64 random bits (xoshiro256**).
