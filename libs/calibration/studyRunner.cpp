@@ -80,8 +80,8 @@ int runForwardingSignals(const std::vector<std::string>& argv, const fs::path& d
     sigaction(SIGINT, &oldInt, nullptr);
     sigaction(SIGTERM, &oldTerm, nullptr);
     if (forwardedSignal)
-        throw UserError("calibrateModel: interrupted (signal " + std::to_string(int(forwardedSignal)) +
-                        "); the runs done so far are kept: run calibrateModel again to continue");
+        throw UserError("interrupted (signal " + std::to_string(int(forwardedSignal)) +
+                        "); the runs done so far are kept: run the same command again to continue");
     return stats::shellExitStatus(status);
 }
 
@@ -200,7 +200,7 @@ void prepareTemplate(const CalibrationStudy& study)
             "#eval \"" + formatNumber(t.factor) + " * $" + p.entry.substr(parent(p.entry).size()) + "\"");
     }
     if (!study.prepareCommand.empty()) {
-        std::cout << "calibrateModel: preparing the template (" << study.prepareCommand << ") in "
+        std::cout << "preparing the template of the runs (" << study.prepareCommand << ") in "
                   << dir.string() << std::endl;
         const int status =
             runForwardingSignals({"/bin/sh", "-c", study.prepareCommand}, dir, dir / "log.prepare");

@@ -89,6 +89,7 @@ struct BondKernelArgs {
     const double* length_j = nullptr;
     const double* bond_area = nullptr;
     const double* damping_beta = nullptr;  // per interface, seconds
+    const double* strength_scale = nullptr;  // per interface factor on sigma-bar and C; nullptr = 1
     int* intact_bonds = nullptr;
     Vec3* force_on_i = nullptr;   // sum over the interface's bonds
     Vec3* torque_on_i = nullptr;  // about cell i's centroid
@@ -142,6 +143,11 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
     in.reference_length = a.length_i[k] + a.length_j[k];
     in.bond_area = a.bond_area[k];
     in.damping_beta = a.damping_beta[k];
+    BondMaterial material = a.material;
+    if (a.strength_scale) {
+        material.tensile_strength *= a.strength_scale[k];
+        material.cohesion *= a.strength_scale[k];
+    }
     Vec3 force, torque_i, torque_j;
     int intact = 0;
     for (int b = a.bond_offset[k]; b < a.bond_offset[k + 1]; ++b) {
@@ -152,7 +158,7 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
         in.relative_velocity = (a.velocity[cj] + cross(a.angular_velocity_world[cj], arm_j)) -
                                (a.velocity[ci] + cross(a.angular_velocity_world[ci], arm_i));
         BondHistory history = loadBondHistory(a, b);
-        const BondOutput out = Law::evaluate(a.material, in, history);
+        const BondOutput out = Law::evaluate(material, in, history);
         storeBondHistory(a, b, history);
         sums.strain_energy += out.strain_energy;
         sums.damping_power += out.damping_power;

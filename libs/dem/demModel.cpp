@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -287,6 +288,7 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
                                      ? beta
                                      : 2.0 * beta * std::sqrt(reduced_mass / stiffness));
+        if (!f.strength_scale.empty()) f.strength_scale.push_back(1.0);
         for (std::size_t e = head_index; e < last; ++e) {
             const VoronoiBond& bond = mesh.bonds[order[e]];
             b.anchor_i.push_back(transposeTimes(Ri, bond.point - mesh.centroids[li]));
@@ -410,6 +412,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(f.length_j, keep_face);
     keepFlagged(f.bond_area, keep_face);
     keepFlagged(f.damping_beta, keep_face);
+    if (!f.strength_scale.empty()) keepFlagged(f.strength_scale, keep_face);
     keepFlagged(f.force_on_i, keep_face);
     keepFlagged(f.torque_on_i, keep_face);
     keepFlagged(f.torque_on_j, keep_face);
@@ -525,6 +528,16 @@ void DemModel::shrinkToFit()
     for (auto* v : {&f.length_i, &f.length_j, &f.bond_area, &f.damping_beta}) v->shrink_to_fit();
     bonds_.anchor_i.shrink_to_fit();
     bonds_.anchor_j.shrink_to_fit();
+}
+
+// ---- Bond strengths ---------------------------------------------------------
+
+void DemModel::scaleInterfaceStrength(int interface, double factor)
+{
+    if (interface < 0 || interface >= interfaces_.size() || !(factor > 0) || !std::isfinite(factor))
+        throw std::invalid_argument("DemModel::scaleInterfaceStrength: bad interface or factor");
+    if (interfaces_.strength_scale.empty()) interfaces_.strength_scale.assign(interfaces_.size(), 1.0);
+    interfaces_.strength_scale[interface] *= factor;
 }
 
 // ---- Walls ------------------------------------------------------------------
@@ -929,6 +942,7 @@ BondKernelArgs DemModel::bondArgs()
     a.length_j = interfaces_.length_j.data();
     a.bond_area = interfaces_.bond_area.data();
     a.damping_beta = interfaces_.damping_beta.data();
+    a.strength_scale = interfaces_.strength_scale.empty() ? nullptr : interfaces_.strength_scale.data();
     a.intact_bonds = interfaces_.intact_bonds.data();
     a.force_on_i = interfaces_.force_on_i.data();
     a.torque_on_i = interfaces_.torque_on_i.data();
@@ -1386,7 +1400,7 @@ std::size_t DemModel::memoryBytes() const
     const InterfaceArrays& f = interfaces_;
     total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
              bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
-             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.force_on_i) + bytes(f.torque_on_i) +
+             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) + bytes(f.force_on_i) + bytes(f.torque_on_i) +
              bytes(f.torque_on_j);
     const BondArrays& b = bonds_;
     total += bytes(b.anchor_i) + bytes(b.anchor_j) + bytes(b.stage) + bytes(b.onset_displacement) +

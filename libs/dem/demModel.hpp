@@ -95,6 +95,12 @@ public:
     // re-evaluated; the energy leaving (kinetic + strain) is booked in energies().exchanged.
     std::vector<int> removeCells(const std::vector<char>& remove);
 
+    // ---- Bond strengths ----------------------------------------------------
+    // Multiply sigma-bar and C of every bond of interface k by factor (> 0); a model
+    // effect (libs/effects) sets these before the first step. Without a call every
+    // factor is 1 and the model carries no array for them.
+    void scaleInterfaceStrength(int interface, double factor);
+
     // ---- Walls -------------------------------------------------------------
     // A rigid plane through point, normal pointing into the domain, moving with velocity.
     int addPlate(const Vec3& point, const Vec3& normal_into_domain, const Vec3& velocity = {});

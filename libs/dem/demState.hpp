@@ -42,6 +42,9 @@ struct InterfaceArrays {
     std::vector<double> length_i, length_j;  // l_i, l_j [m]
     std::vector<double> bond_area;           // A/n [m^2]
     std::vector<double> damping_beta;        // beta of Eqs. 18–19 in seconds after the chosen reading [s]
+    // Factor on sigma-bar and C of the interface's bonds (model effects: weakened contact
+    // zones, random strengths). Empty = 1 everywhere, so a plain model carries no array.
+    std::vector<double> strength_scale;
     std::vector<Vec3> force_on_i, torque_on_i, torque_on_j;  // sums over the interface's bonds
 
     int size() const { return static_cast<int>(cell_i.size()); }

@@ -11,6 +11,7 @@
 #include "core/progress.hpp"
 #include "core/timeControl.hpp"
 #include "demCase/demCase.hpp"
+#include "effects/modelEffect.hpp"
 #include "io/timeSeries.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
 
@@ -52,6 +53,7 @@ struct BondedDemRun::Impl {
     TimeControl time;
     DemParameters parameters;
     Loading loading;
+    ModelEffects effects;  // constant/modelEffects (optional): off = the baseline model
     VoronoiMesh mesh;
     std::unique_ptr<DemModel> model;
     CellShapes shapes;
@@ -74,6 +76,11 @@ struct BondedDemRun::Impl {
         parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
         loading = readLoading(Dictionary::readFile(a.path("constant/loading")));
         parameters.gravity = loading.gravity;
+        if (fs::exists(a.path("constant/modelEffects"))) {
+            effects = ModelEffects::read(Dictionary::readFile(a.path("constant/modelEffects")));
+            effects.applyToParameters(parameters);
+            parameters.validate();
+        }
         if (!fs::exists(a.path("constant/voronoiMesh/meshInfo")))
             throw UserError("missing " + a.path("constant/voronoiMesh").string() +
                             "; run voronoiMesh first to make the bonded cells");
@@ -82,6 +89,7 @@ struct BondedDemRun::Impl {
         model = std::make_unique<DemModel>(mesh, parameters);
         shapes = captureCellShapes(mesh, *model);
         placePlates();
+        effects.applyToModel(*model, {model->wall(lowerPlate).origin.z, model->wall(upperPlate).origin.z});
         chooseTimeStep();
         readFunctions();
         if (time.restarting()) restoreState();
@@ -162,10 +170,14 @@ struct BondedDemRun::Impl {
 
     double plateForce() const { return model->wallReaction(upperPlate).z; }
     double lowerPlateForce() const { return -model->wallReaction(lowerPlate).z; }
-    double gapChange() const
+    // How far the plates have approached each other.
+    double plateApproach() const
     {
         return model->wallDisplacement(lowerPlate).z - model->wallDisplacement(upperPlate).z;
     }
+    // What the machine records: the plate approach plus whatever model effects put
+    // in series with the specimen (compliance, seating); equal without them.
+    double gapChange() const { return effects.recordedDisplacement(plateApproach(), plateForce()); }
 
     std::vector<double> sampleRow() const
     {
@@ -180,14 +192,16 @@ struct BondedDemRun::Impl {
                 e.dissipated(),
                 e.fracture,
                 e.externalWork(),
-                e.balance() - model->initialBalance()};
+                e.balance() - model->initialBalance(),
+                plateApproach()};
     }
 
     static std::vector<Column> columns()
     {
         return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},       {"forceLower", "N"},
                 {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},      {"dissipated", "J"},
-                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"}};
+                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"},
+                {"plateApproach", "m"}};
     }
 
     void writeTime()
@@ -203,7 +217,7 @@ struct BondedDemRun::Impl {
     {
         if (!loadingStarted) return false;
         const double f = plateForce();
-        if (loading.stopDisplacement > 0 && gapChange() >= loading.stopDisplacement) return true;
+        if (loading.stopDisplacement > 0 && plateApproach() >= loading.stopDisplacement) return true;
         return loading.stopForceFraction > 0 && peakForce > loading.minPeakForce && peakForce > 0 &&
                f < loading.stopForceFraction * peakForce;
     }
@@ -252,6 +266,7 @@ void BondedDemRun::printSetup() const
         r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
         r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
         r.loading.settlingTime, 1e-6 * static_cast<double>(r.model->memoryBytes()));
+    for (const std::string& line : r.effects.descriptions()) std::printf("Model effect: %s\n", line.c_str());
     if (r.restarted) std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.step);
 }
 

@@ -1,0 +1,721 @@
+#include "explain/explainGap.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "calibration/studyRunner.hpp"
+#include "core/atomicFile.hpp"
+#include "core/dictionary.hpp"
+#include "core/dictionaryEditor.hpp"
+#include "core/error.hpp"
+#include "effects/modelEffect.hpp"
+#include "explain/chiSquare.hpp"
+#include "explain/pointRuns.hpp"
+#include "stats/distances.hpp"
+#include "stats/gnuplot.hpp"
+#include "stats/textTable.hpp"
+
+namespace rockfrac::explain {
+
+namespace fs = std::filesystem;
+
+const char* verdictName(Verdict v)
+{
+    switch (v) {
+        case Verdict::noGapBeyondScatter: return "noGapBeyondScatter";
+        case Verdict::explained: return "explained";
+        case Verdict::indistinguishable: return "indistinguishable";
+        case Verdict::unexplained: return "unexplained";
+    }
+    return "?";
+}
+
+namespace {
+
+// One half of the measured specimens (calibration or held out).
+struct Half {
+    std::vector<std::string> ids;
+    FeatureSummary features;
+    std::vector<double> loads;
+    std::vector<std::vector<double>> displacement, force;  // empty without curves
+};
+
+// What each feature needs to be measured, for "the measurement that would separate them".
+const char* measurementFor(int feature)
+{
+    switch (feature) {
+        case peakForce: return "the failure loads";
+        case peakForceSpread: return "more specimens (the spread of the failure loads)";
+        case peakDisplacement: return "the displacement at failure";
+        case secantStiffness: return "full force-displacement curves (the stiffness between 30 and 70 % of the peak)";
+        case toeIndex: return "full force-displacement curves from the first contact (the toe)";
+        case softening: return "force-displacement curves past the peak (the softening)";
+    }
+    return "?";
+}
+
+std::string format(double v, int digits = 4)
+{
+    char b[64];
+    std::snprintf(b, sizeof(b), "%.*g", digits, v);
+    return b;
+}
+
+class Analysis {
+public:
+    Analysis(ExplainStudy study, int jobs) : s_(std::move(study))
+    {
+        s_.jobs = jobs;
+        run_ = s_.runStudy();
+        nb_ = static_cast<int>(s_.baseline.size());
+        ne_ = static_cast<int>(s_.effects.size());
+        splitMeasurements();
+    }
+
+    ExplainOutcome execute();
+
+private:
+    ExplainStudy s_;
+    calibration::CalibrationStudy run_;
+    int nb_ = 0, ne_ = 0;
+    Half cal_, held_;
+    bool curves_ = false;
+    std::vector<int> obs_;  // observed features
+    std::vector<double> theta0_;
+    PointRuns base0_;
+    FeatureSummary model0_;
+    std::vector<double> sigmaCal_, sigmaHeld_;  // per observed feature
+    Eigen::MatrixXd jacobian_;                  // nFeatures x (nb + ne), physical units per parameter unit
+    std::vector<double> probeSize_;             // the step of each parameter's probe
+    int simulations_ = 0;
+    std::vector<std::string> log_;
+
+    void say(const std::string& line)
+    {
+        std::cout << "explainGap: " << line << std::endl;
+        log_.push_back(line);
+    }
+
+    void splitMeasurements();
+    void readBaselineValues();
+    PointRuns evaluate(const std::vector<double>& values, const std::string& label)
+    {
+        PointRuns r = runPoint(run_, values, label, s_.displacementColumn, s_.forceColumn);
+        simulations_ += static_cast<int>(r.features.size()) + r.failed;
+        return r;
+    }
+    Eigen::VectorXd residual(const FeatureSummary& model, const Half& half, const std::vector<double>& sigma) const
+    {
+        Eigen::VectorXd r(static_cast<int>(obs_.size()));
+        for (std::size_t i = 0; i < obs_.size(); ++i)
+            r[static_cast<int>(i)] = (half.features.value[obs_[i]] - model.value[obs_[i]]) / sigma[i];
+        return r;
+    }
+    double chiCal(const FeatureSummary& m) const { return residual(m, cal_, sigmaCal_).squaredNorm(); }
+    double heldGap(const FeatureSummary& m) const
+    {
+        return std::sqrt(residual(m, held_, sigmaHeld_).squaredNorm() / static_cast<double>(obs_.size()));
+    }
+    // Whitened sensitivity columns (observed features) of the given parameters.
+    Eigen::MatrixXd whitened(const std::vector<int>& parameters) const
+    {
+        Eigen::MatrixXd m(static_cast<int>(obs_.size()), static_cast<int>(parameters.size()));
+        for (std::size_t i = 0; i < obs_.size(); ++i)
+            for (std::size_t j = 0; j < parameters.size(); ++j)
+                m(static_cast<int>(i), static_cast<int>(j)) = jacobian_(obs_[i], parameters[j]) / sigmaCal_[i];
+        return m;
+    }
+    std::vector<double> clip(std::vector<double> v) const
+    {
+        for (int j = 0; j < nb_ + ne_; ++j) {
+            const double lo = j < nb_ ? s_.baseline[static_cast<std::size_t>(j)].where.low : run_.parameters[static_cast<std::size_t>(j)].low;
+            const double hi = j < nb_ ? s_.baseline[static_cast<std::size_t>(j)].where.high : run_.parameters[static_cast<std::size_t>(j)].high;
+            v[static_cast<std::size_t>(j)] = std::clamp(v[static_cast<std::size_t>(j)], lo, hi);
+        }
+        return v;
+    }
+    // Gauss–Newton refit of `free` parameters from `start` (two steps, each checked by simulation).
+    struct Fit {
+        std::vector<double> values;
+        PointRuns runs;
+        FeatureSummary model;
+        double chi = 0.0;
+        Eigen::MatrixXd covariance;  // of the free parameters (linearised)
+    };
+    Fit refit(const std::vector<int>& free, const Fit& start, const std::string& label, const Fit* previous = nullptr);
+    std::string describeParameter(int j, double v) const
+    {
+        return run_.parameters[static_cast<std::size_t>(j)].name + " = " + format(v) + " " +
+               run_.parameters[static_cast<std::size_t>(j)].unit;
+    }
+    void writeOutputs(const ExplainOutcome& outcome, const Fit& baseline, const Fit* effect, int effectIndex);
+};
+
+void Analysis::splitMeasurements()
+{
+    const auto& specimens = s_.measurements.specimens;
+    const std::size_t n = specimens.size();
+    const std::size_t nHeld = static_cast<std::size_t>(std::lround(s_.heldOutFraction * static_cast<double>(n)));
+    if (n < 6 || nHeld < 3 || n - nHeld < 3)
+        throw UserError(s_.measurementsFile.string() + ": " + std::to_string(n) +
+                        " specimens; explainGap fits on some and checks on the others held out (heldOut " +
+                        format(s_.heldOutFraction) +
+                        "), and each part needs at least 3: give at least 6 specimens, or change heldOut in " +
+                        s_.dictionary.string());
+    curves_ = std::all_of(specimens.begin(), specimens.end(), [](const auto& sp) { return sp.curve.has_value(); });
+    // Every k-th specimen is held out, spread over the file order (no cherry-picking).
+    std::vector<CurveFeatures> calCurves, heldCurves;
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool isHeld = static_cast<std::size_t>(std::floor((static_cast<double>(i) + 1) * nHeld / static_cast<double>(n))) >
+                            static_cast<std::size_t>(std::floor(static_cast<double>(i) * nHeld / static_cast<double>(n)));
+        Half& h = isHeld ? held_ : cal_;
+        const auto& sp = specimens[i];
+        h.ids.push_back(sp.id);
+        if (curves_) {
+            std::string why;
+            const auto c = curveFeatures(sp.curve->displacement, sp.curve->force, &why);
+            if (!c)
+                throw UserError(sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
+                                "; explainGap compares curves up to and past the failure: give the whole curve "
+                                "to the load drop, or leave out every curve to compare failure loads only");
+            (isHeld ? heldCurves : calCurves).push_back(*c);
+            h.loads.push_back(c->peakForce);
+            h.displacement.push_back(sp.curve->displacement);
+            h.force.push_back(sp.curve->force);
+        } else {
+            h.loads.push_back(sp.failureLoad);
+        }
+    }
+    cal_.features = curves_ ? summarise(calCurves) : summariseFailureLoads(cal_.loads);
+    held_.features = curves_ ? summarise(heldCurves) : summariseFailureLoads(held_.loads);
+    std::vector<int> wanted = s_.requestedFeatures;
+    if (wanted.empty())
+        for (int f = 0; f < nFeatures; ++f) wanted.push_back(f);
+    for (int f : wanted) {
+        if (cal_.features.available[f])
+            obs_.push_back(f);
+        else if (!s_.requestedFeatures.empty())
+            throw UserError(s_.dictionary.string() + ": feature '" + featureName(f) + "' needs curves, and " +
+                            s_.measurementsFile.string() + " has failure loads only");
+    }
+}
+
+void Analysis::readBaselineValues()
+{
+    theta0_.clear();
+    for (const auto& b : s_.baseline) {
+        const Dictionary d = Dictionary::readFile(s_.targetCase / b.where.file);
+        const double v = d.getScalar(b.where.entry, Bounds::any());
+        if (v < b.where.low || v > b.where.high)
+            throw UserError(s_.dictionary.string() + ": baseline parameter '" + b.where.name + "' is " + format(v) +
+                            " in the case, outside its range (" + format(b.where.low) + " " + format(b.where.high) +
+                            "); widen the range");
+        theta0_.push_back(v);
+    }
+    for (const std::string& name : s_.effects) theta0_.push_back(findEffect(name, "").neutral);
+}
+
+Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, const std::string& label,
+                              const Fit* previous)
+{
+    // Gauss–Newton in coordinates scaled by each parameter's probe, with Broyden's rank-one
+    // update of the sensitivities after every simulated point: the probes give secants at the
+    // case's values, and an effect can be strongly nonlinear (a strength loss of 0.8 does far
+    // more than 4/3 of 0.6), so the sensitivities learn from every point on the way.
+    const int n = static_cast<int>(free.size());
+    Eigen::VectorXd scale(n);
+    for (int k = 0; k < n; ++k) scale[k] = std::max(std::fabs(probeSize_[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])]), 1e-300);
+    Eigen::MatrixXd A = whitened(free) * scale.asDiagonal();
+    auto coordinates = [&](const Fit& f) {
+        Eigen::VectorXd x(n);
+        for (int k = 0; k < n; ++k) x[k] = f.values[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] / scale[k];
+        return x;
+    };
+    auto broyden = [&](const Fit& from, const Fit& to) {
+        const Eigen::VectorXd dx = coordinates(to) - coordinates(from);
+        const double dxdx = dx.squaredNorm();
+        if (dxdx <= 0) return;
+        const Eigen::VectorXd dm = residual(from.model, cal_, sigmaCal_) - residual(to.model, cal_, sigmaCal_);
+        A += (dm - A * dx) * dx.transpose() / dxdx;
+    };
+    if (previous) broyden(*previous, start);
+    Fit best = start;
+    int worse = 0;
+    for (int iteration = 1; iteration <= 3 && worse < 2; ++iteration) {
+        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, cal_, sigmaCal_));
+        std::vector<double> next = best.values;
+        for (int k = 0; k < n; ++k) next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
+        next = clip(next);
+        bool moves = false;
+        for (int k = 0; k < n; ++k) {
+            const std::size_t j = static_cast<std::size_t>(free[static_cast<std::size_t>(k)]);
+            moves = moves || std::fabs(next[j] - best.values[j]) > 1e-3 * scale[k];
+        }
+        if (!moves) break;
+        Fit trial;
+        trial.values = next;
+        try {
+            trial.runs = evaluate(next, label + "-" + std::to_string(iteration));
+        } catch (const UserError& error) {
+            say("  " + label + ": step " + std::to_string(iteration) + " not taken, its runs failed: " + error.what());
+            break;
+        }
+        trial.model = trial.runs.summary();
+        trial.chi = chiCal(trial.model);
+        broyden(best, trial);
+        if (trial.chi < best.chi) {
+            best = std::move(trial);
+            worse = 0;
+        } else {
+            ++worse;
+        }
+    }
+    const Eigen::MatrixXd unscaled = A * scale.cwiseInverse().asDiagonal();
+    best.covariance = (unscaled.transpose() * unscaled).completeOrthogonalDecomposition().pseudoInverse();
+    return best;
+}
+
+ExplainOutcome Analysis::execute()
+{
+    ExplainOutcome out;
+    readBaselineValues();
+    say(std::to_string(s_.measurements.specimens.size()) + " specimens in " + s_.measurementsFile.string() + " (" +
+        std::to_string(cal_.ids.size()) + " to fit, " + std::to_string(held_.ids.size()) + " held out), " +
+        (curves_ ? "with curves" : "failure loads only") + "; model case " + s_.targetCase.string() + ", " +
+        std::to_string(s_.seeds.values.size()) + " Voronoi seeds per evaluation");
+    std::string features;
+    for (int f : obs_) features += std::string(features.empty() ? "" : ", ") + featureName(f);
+    say("features compared: " + features);
+
+    calibration::prepareTemplate(run_);
+    std::ostringstream body;
+    for (const std::string& name : s_.effects) {
+        const EffectDescriptor& d = findEffect(name, "");
+        body << name << "\n{\n    " << d.parameter << " " << formatNumber(d.neutral) << ";   // neutral: off\n";
+        for (const auto& [entry, value] : s_.effectFixed[name]) body << "    " << entry << " " << value << ";\n";
+        body << "}\n";
+    }
+    writeTemplateEffects(run_, body.str());
+
+    // 1. The baseline as the case has it, and its scatter over the seeds.
+    base0_ = evaluate(theta0_, "baseline");
+    model0_ = base0_.summary();
+    for (int f : obs_) {
+        sigmaCal_.push_back(std::hypot(model0_.standardError[f], cal_.features.standardError[f]));
+        sigmaHeld_.push_back(std::hypot(model0_.standardError[f], held_.features.standardError[f]));
+    }
+    for (double& v : sigmaCal_) v = std::max(v, 1e-300);
+    for (double& v : sigmaHeld_) v = std::max(v, 1e-300);
+
+    // 2. Sensitivities: baseline parameters by a relative step, effects by their probe.
+    jacobian_ = Eigen::MatrixXd::Zero(nFeatures, nb_ + ne_);
+    for (int j = 0; j < nb_ + ne_; ++j) {
+        std::vector<double> probe = theta0_;
+        double step = 0.0;
+        if (j < nb_) {
+            const auto& b = s_.baseline[static_cast<std::size_t>(j)];
+            step = b.relativeStep * theta0_[static_cast<std::size_t>(j)];
+            if (theta0_[static_cast<std::size_t>(j)] + step > b.where.high) step = -step;
+        } else {
+            const EffectDescriptor& d = findEffect(s_.effects[static_cast<std::size_t>(j - nb_)], "");
+            double scale = 1.0;
+            if (d.probeScale == ProbeScale::peakDisplacement) scale = model0_.value[peakDisplacement];
+            if (d.probeScale == ProbeScale::peakCompliance)
+                scale = model0_.value[peakDisplacement] / model0_.value[peakForce];
+            step = d.probe * scale;
+        }
+        probe[static_cast<std::size_t>(j)] += step;
+        probe = clip(probe);
+        step = probe[static_cast<std::size_t>(j)] - theta0_[static_cast<std::size_t>(j)];
+        probeSize_.push_back(step);
+        const PointRuns runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
+        const FeatureSummary m = runs.summary();
+        for (int f = 0; f < nFeatures; ++f) jacobian_(f, j) = (m.value[f] - model0_.value[f]) / step;
+    }
+
+    // What each parameter's probe does to every feature, in standard errors of the
+    // calibration half (the signatures the screening tells the effects apart by).
+    for (int j = 0; j < nb_ + ne_; ++j) {
+        std::string row;
+        for (std::size_t i = 0; i < obs_.size(); ++i)
+            row += std::string(i ? ", " : "") + featureName(obs_[i]) + " " +
+                   format(jacobian_(obs_[i], j) * probeSize_[static_cast<std::size_t>(j)] / sigmaCal_[i], 2);
+        say("  signature of " + run_.parameters[static_cast<std::size_t>(j)].name + " (probe " +
+            format(probeSize_[static_cast<std::size_t>(j)], 3) + "): " + row);
+    }
+
+    // 3. The baseline re-fitted on the calibration half: is what is left beyond the scatter?
+    std::vector<int> baselineFree;
+    for (int j = 0; j < nb_; ++j) baselineFree.push_back(j);
+    Fit start;
+    start.values = theta0_;
+    start.runs = base0_;
+    start.model = model0_;
+    start.chi = chiCal(model0_);
+    const Fit baseline = refit(baselineFree, start, "fit-baseline");
+    const int dof = std::max(1, static_cast<int>(obs_.size()) - nb_);
+    out.baselineChiSquare = baseline.chi;
+    out.baselinePValue = chiSquareSurvival(baseline.chi, dof);
+    out.baselineHeldOutGap = heldGap(baseline.model);
+    std::string fitted;
+    for (int j = 0; j < nb_; ++j) fitted += (j ? ", " : "") + describeParameter(j, baseline.values[static_cast<std::size_t>(j)]);
+    say("baseline re-fitted (" + fitted + "): chi-square " + format(baseline.chi) + " on " + std::to_string(dof) +
+        " degrees of freedom, p = " + format(out.baselinePValue, 3) + "; held-out gap " +
+        format(out.baselineHeldOutGap, 3) + " (RMS of the feature errors in standard errors)");
+
+    // 4. Score test of every effect at the re-fitted baseline.
+    const Eigen::MatrixXd A = whitened(baselineFree);
+    const Eigen::MatrixXd projector =
+        Eigen::MatrixXd::Identity(A.rows(), A.rows()) - A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
+    const Eigen::VectorXd r = residual(baseline.model, cal_, sigmaCal_);
+    std::vector<Eigen::VectorXd> projected;
+    for (int e = 0; e < ne_; ++e) {
+        const EffectDescriptor& d = findEffect(s_.effects[static_cast<std::size_t>(e)], "");
+        ScreenedEffect se;
+        se.name = d.name;
+        const Eigen::VectorXd b = projector * whitened({nb_ + e}).col(0);
+        projected.push_back(b);
+        const double bb = b.squaredNorm();
+        if (bb > 1e-12) {
+            se.amplitude = b.dot(r) / bb;
+            se.score = b.dot(r) * b.dot(r) / bb;
+            const double target = d.neutral + se.amplitude;
+            se.wrongSign = (d.neutral <= d.low && target < d.low) || (d.neutral >= d.high && target > d.high);
+            if (se.wrongSign) se.score = 0.0;
+        }
+        se.pValue = chiSquareSurvival(se.score, 1);
+        out.screened.push_back(se);
+    }
+    std::vector<int> order(static_cast<std::size_t>(ne_));
+    for (int e = 0; e < ne_; ++e) order[static_cast<std::size_t>(e)] = e;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return out.screened[static_cast<std::size_t>(a)].score > out.screened[static_cast<std::size_t>(b)].score;
+    });
+    for (int e : order) {
+        const auto& se = out.screened[static_cast<std::size_t>(e)];
+        say("  screen " + se.name + ": score " + format(se.score, 3) + ", p = " + format(se.pValue, 3) +
+            (se.wrongSign ? " (the data want it outside its physical range)" : "") + ", linearised " +
+            findEffect(se.name, "").parameter + " change " + format(se.amplitude, 3));
+    }
+    auto cosine = [&](int a, int b) {
+        const double na = projected[static_cast<std::size_t>(a)].norm(), nb = projected[static_cast<std::size_t>(b)].norm();
+        return na > 0 && nb > 0 ? projected[static_cast<std::size_t>(a)].dot(projected[static_cast<std::size_t>(b)]) / (na * nb) : 0.0;
+    };
+
+    // The gap exceeds the scatter when the omnibus test rejects, or when one effect's
+    // targeted score test rejects after a Bonferroni correction for the number screened
+    // (an effect concentrates its signature in one direction, which the omnibus test
+    // dilutes over every degree of freedom).
+    double smallestScoreP = 1.0;
+    for (const auto& se : out.screened) smallestScoreP = std::min(smallestScoreP, se.pValue);
+    const bool gapBeyondScatter =
+        out.baselinePValue < s_.significance || smallestScoreP < s_.significance / std::max(1, ne_);
+    for (std::size_t a = 0; a < order.size(); ++a)
+        for (std::size_t b = a + 1; b < order.size(); ++b) {
+            const auto& ea = out.screened[static_cast<std::size_t>(order[a])];
+            const auto& eb = out.screened[static_cast<std::size_t>(order[b])];
+            if (ea.pValue < s_.significance && eb.pValue < s_.significance && !ea.wrongSign && !eb.wrongSign)
+                say("  " + ea.name + " and " + eb.name + ": cosine of their projected signatures " +
+                    format(cosine(order[a], order[b]), 3));
+        }
+    Fit bestFit;
+    int bestEffect = -1;
+    if (!gapBeyondScatter) {
+        out.verdict = Verdict::noGapBeyondScatter;
+        out.sentence = "explainGap: no missing effect is needed: the baseline, re-fitted (" + fitted +
+                       "), is within the model's own scatter (chi-square p = " + format(out.baselinePValue, 3) + ").";
+    } else {
+        // 5. Confirm the significant candidates by a joint refit, judged on the held-out half.
+        std::vector<int> candidates;
+        for (int e : order)
+            if (out.screened[static_cast<std::size_t>(e)].pValue < s_.significance && !out.screened[static_cast<std::size_t>(e)].wrongSign)
+                candidates.push_back(e);
+        if (candidates.size() > 3) candidates.resize(3);
+        const double aicBaseline = baseline.chi + 2.0 * nb_;
+        std::vector<Fit> fits(static_cast<std::size_t>(ne_));
+        for (int e : candidates) {
+            ScreenedEffect& se = out.screened[static_cast<std::size_t>(e)];
+            std::vector<int> free = baselineFree;
+            free.push_back(nb_ + e);
+            // The linearised size, within a trust region of three probes (the sensitivity
+            // is a secant over one probe; far beyond it the model may not even run).
+            const double probe = std::fabs(probeSize_[static_cast<std::size_t>(nb_ + e)]);
+            Fit from = baseline;
+            from.values[static_cast<std::size_t>(nb_ + e)] += std::clamp(se.amplitude, -3 * probe, 3 * probe);
+            from.values = clip(from.values);
+            Fit fit;
+            try {
+                from.runs = evaluate(from.values, "fit-" + se.name + "-0");
+                from.model = from.runs.summary();
+                from.chi = chiCal(from.model);
+                fit = refit(free, from, "fit-" + se.name, &baseline);
+            } catch (const UserError& error) {
+                say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
+                continue;
+            }
+            se.confirmed = true;
+            se.value = fit.values[static_cast<std::size_t>(nb_ + e)];
+            const double sd = std::sqrt(std::max(0.0, fit.covariance(nb_, nb_)));
+            se.intervalLow = std::max(run_.parameters[static_cast<std::size_t>(nb_ + e)].low, se.value - 1.645 * sd);
+            se.intervalHigh = std::min(run_.parameters[static_cast<std::size_t>(nb_ + e)].high, se.value + 1.645 * sd);
+            se.heldOutGap = heldGap(fit.model);
+            se.reduction = out.baselineHeldOutGap > 0 ? 1.0 - se.heldOutGap / out.baselineHeldOutGap : 0.0;
+            se.aic = fit.chi + 2.0 * (nb_ + 1);
+            se.kept = se.reduction >= s_.minimumGapReduction && se.aic < aicBaseline;
+            say("  refit " + se.name + ": " + describeParameter(nb_ + e, se.value) + " (90 % " + format(se.intervalLow, 3) +
+                " to " + format(se.intervalHigh, 3) + "), chi-square " + format(fit.chi, 3) + ", held-out gap " +
+                format(se.heldOutGap, 3) + " (" + format(100 * se.reduction, 3) + " %), AIC " + format(se.aic, 4) +
+                " vs " + format(aicBaseline, 4) + (se.kept ? ": kept" : ": not kept"));
+            fits[static_cast<std::size_t>(e)] = std::move(fit);
+        }
+        std::vector<int> kept;
+        for (int e : candidates)
+            if (out.screened[static_cast<std::size_t>(e)].kept) kept.push_back(e);
+        std::sort(kept.begin(), kept.end(), [&](int a, int b) {
+            return out.screened[static_cast<std::size_t>(a)].reduction > out.screened[static_cast<std::size_t>(b)].reduction;
+        });
+        if (kept.empty()) {
+            out.verdict = Verdict::unexplained;
+            out.sentence = "explainGap: the gap exceeds the model's scatter (p = " + format(out.baselinePValue, 3) +
+                           ") but no effect of the library closes it on the held-out specimens by " +
+                           format(100 * s_.minimumGapReduction, 3) + " %; the model misses something else.";
+        } else {
+            const int top = kept.front();
+            std::vector<int> twins;
+            for (int e : kept)
+                if (e != top && std::fabs(cosine(top, e)) >= s_.indistinguishableCosine &&
+                    out.screened[static_cast<std::size_t>(e)].aic - out.screened[static_cast<std::size_t>(top)].aic < 2.0)
+                    twins.push_back(e);
+            const ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
+            if (!twins.empty()) {
+                out.verdict = Verdict::indistinguishable;
+                out.alternatives.push_back(t.name);
+                for (int e : twins) out.alternatives.push_back(out.screened[static_cast<std::size_t>(e)].name);
+                // Which unobserved feature would separate the top two (model sensitivities on every
+                // feature, scaled by the model's scatter, with the baseline projected out)?
+                auto fullDirection = [&](int e) {
+                    Eigen::MatrixXd full(nFeatures, nb_ + 1);
+                    for (int f = 0; f < nFeatures; ++f) {
+                        const double scale = std::max(model0_.standardError[f], 1e-300);
+                        for (int j = 0; j < nb_; ++j) full(f, j) = jacobian_(f, j) / scale;
+                        full(f, nb_) = jacobian_(f, nb_ + e) / scale;
+                    }
+                    const Eigen::MatrixXd B = full.leftCols(nb_);
+                    Eigen::VectorXd c = full.col(nb_);
+                    c -= B * (B.transpose() * B).completeOrthogonalDecomposition().pseudoInverse() * (B.transpose() * c);
+                    const double n = c.norm();
+                    return n > 0 ? Eigen::VectorXd(c / n) : c;
+                };
+                Eigen::VectorXd u = fullDirection(top), v = fullDirection(twins.front());
+                if (u.dot(v) < 0) v = -v;
+                int separating = -1;
+                double largest = 0.3;
+                for (int f = 0; f < nFeatures; ++f) {
+                    if (std::find(obs_.begin(), obs_.end(), f) != obs_.end()) continue;
+                    if (std::fabs(u[f] - v[f]) > largest) largest = std::fabs(u[f] - v[f]), separating = f;
+                }
+                out.separatingMeasurement =
+                    separating >= 0 ? std::string(measurementFor(separating))
+                                    : "no measurement of this test separates them; a test of another geometry "
+                                      "(e.g. single particle breakage of irregular rocks) may";
+                std::string names;
+                for (std::size_t i = 0; i < out.alternatives.size(); ++i)
+                    names += (i ? (i + 1 == out.alternatives.size() ? " or " : ", ") : "") + out.alternatives[i];
+                out.sentence = "explainGap: the gap is real (p = " + format(out.baselinePValue, 3) + ") and " + names +
+                               " explain it equally well (held-out gap -" + format(100 * t.reduction, 3) +
+                               " % for " + t.name + "); the data cannot tell them apart: " +
+                               out.separatingMeasurement + " would. No augmented case is written.";
+            } else {
+                out.verdict = Verdict::explained;
+                out.effect = t.name;
+                bestEffect = top;
+                bestFit = fits[static_cast<std::size_t>(top)];
+                const EffectDescriptor& d = findEffect(t.name, "");
+                out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics + "): " + d.parameter +
+                               " = " + format(t.value, 3) + " " + d.unit + " (90 % interval " + format(t.intervalLow, 3) +
+                               " to " + format(t.intervalHigh, 3) + "); the held-out gap falls by " +
+                               format(100 * t.reduction, 3) + " % (from " + format(out.baselineHeldOutGap, 3) + " to " +
+                               format(t.heldOutGap, 3) + ").";
+            }
+        }
+    }
+    out.simulations = simulations_;
+    say(out.sentence.substr(std::string("explainGap: ").size()));
+    writeOutputs(out, baseline, bestEffect >= 0 ? &bestFit : nullptr, bestEffect);
+    return out;
+}
+
+void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, const Fit* effect, int effectIndex)
+{
+    const fs::path dir = s_.directory;
+    // Gap table: every observed feature, measured and simulated, before and after.
+    stats::TextTable table;
+    table.names = {"feature", "measuredFit", "baseline", "withEffect", "zFitBefore", "zFitAfter", "measuredHeldOut",
+                   "zHeldOutBefore", "zHeldOutAfter"};
+    table.units = {"-", "SI", "SI", "SI", "-", "-", "SI", "-", "-"};
+    const FeatureSummary& after = effect ? effect->model : baseline.model;
+    const Eigen::VectorXd zb = residual(baseline.model, cal_, sigmaCal_), za = residual(after, cal_, sigmaCal_);
+    const Eigen::VectorXd hb = residual(baseline.model, held_, sigmaHeld_), ha = residual(after, held_, sigmaHeld_);
+    for (std::size_t i = 0; i < obs_.size(); ++i) {
+        const int f = obs_[i];
+        const int k = static_cast<int>(i);
+        table.rows.push_back({std::string(featureName(f)) + "[" + featureUnit(f) + "]", format(cal_.features.value[f], 6),
+                              format(baseline.model.value[f], 6), format(after.value[f], 6), format(zb[k], 3),
+                              format(za[k], 3), format(held_.features.value[f], 6), format(hb[k], 3), format(ha[k], 3)});
+    }
+    stats::writeTextTable(dir / "gapTable.dat", table);
+
+    // The calibration issue's metrics on the held-out half, before and after.
+    auto peaks = [](const PointRuns& runs) {
+        std::vector<double> p;
+        for (const auto& c : runs.features) p.push_back(c.peakForce);
+        return p;
+    };
+    stats::TextTable metrics;
+    metrics.names = {"metric", "baseline", "withEffect"};
+    metrics.units = {"-", "-", "-"};
+    const PointRuns& afterRuns = effect ? effect->runs : baseline.runs;
+    metrics.rows.push_back({"KS_failureLoads", format(stats::kolmogorovSmirnov(held_.loads, peaks(baseline.runs)), 3),
+                            format(stats::kolmogorovSmirnov(held_.loads, peaks(afterRuns)), 3)});
+    metrics.rows.push_back({"W1_failureLoads[N]", format(stats::wasserstein1(held_.loads, peaks(baseline.runs)), 4),
+                            format(stats::wasserstein1(held_.loads, peaks(afterRuns)), 4)});
+    auto relative = [&](const FeatureSummary& m, int f) {
+        return format(100 * (m.value[f] - held_.features.value[f]) / held_.features.value[f], 3);
+    };
+    metrics.rows.push_back({"peakForceError[%]", relative(baseline.model, peakForce), relative(after, peakForce)});
+    if (curves_) {
+        metrics.rows.push_back({"peakDisplacementError[%]", relative(baseline.model, peakDisplacement),
+                                relative(after, peakDisplacement)});
+        metrics.rows.push_back({"secantStiffnessError[%]", relative(baseline.model, secantStiffness),
+                                relative(after, secantStiffness)});
+        metrics.rows.push_back({"toeIndexDifference", format(baseline.model.value[toeIndex] - held_.features.value[toeIndex], 3),
+                                format(after.value[toeIndex] - held_.features.value[toeIndex], 3)});
+        const double upTo = held_.features.value[peakDisplacement];
+        const auto measured = meanCurve(held_.displacement, held_.force, upTo, 50);
+        auto nrms = [&](const PointRuns& runs) {
+            const auto sim = meanCurve(runs.displacement, runs.force, upTo, 50);
+            double sum = 0;
+            for (std::size_t i = 0; i < sim.size(); ++i) sum += (sim[i] - measured[i]) * (sim[i] - measured[i]);
+            return std::sqrt(sum / static_cast<double>(sim.size())) / held_.features.value[peakForce];
+        };
+        metrics.rows.push_back({"curveNRMS", format(nrms(baseline.runs), 3), format(nrms(afterRuns), 3)});
+    }
+    stats::writeTextTable(dir / "gapMetrics.dat", metrics);
+
+    // Screening table.
+    stats::TextTable screen;
+    screen.names = {"effect", "score", "p", "linearisedChange", "refitted", "value", "low90", "high90",
+                    "heldOutGap", "reduction", "AIC", "kept"};
+    screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
+    for (const auto& se : out.screened)
+        screen.rows.push_back({se.name, format(se.score, 4), format(se.pValue, 3), format(se.amplitude, 4),
+                               se.confirmed ? "yes" : "no", se.confirmed ? format(se.value, 4) : "-",
+                               se.confirmed ? format(se.intervalLow, 4) : "-", se.confirmed ? format(se.intervalHigh, 4) : "-",
+                               se.confirmed ? format(se.heldOutGap, 3) : "-", se.confirmed ? format(se.reduction, 3) : "-",
+                               se.confirmed ? format(se.aic, 4) : "-", se.kept ? "yes" : "no"});
+    stats::writeTextTable(dir / "screening.dat", screen);
+
+    // Machine-readable result (tests and scripts read it).
+    writeFileAtomically(dir / "explainGap.result", [&](std::ostream& o) {
+        o << "FoamFile { format ascii; class dictionary; object explainGapResult; }\n\n"
+          << "verdict            " << verdictName(out.verdict) << ";\n"
+          << "effect             \"" << out.effect << "\";\n"
+          << "alternatives       (";
+        for (std::size_t i = 0; i < out.alternatives.size(); ++i) o << (i ? " " : "") << out.alternatives[i];
+        o << ");\nseparatingMeasurement \"" << out.separatingMeasurement << "\";\n"
+          << "baselineChiSquare  " << format(out.baselineChiSquare, 6) << ";\n"
+          << "baselinePValue     " << format(out.baselinePValue, 6) << ";\n"
+          << "baselineHeldOutGap " << format(out.baselineHeldOutGap, 6) << ";\n";
+        if (effectIndex >= 0) {
+            const auto& se = out.screened[static_cast<std::size_t>(effectIndex)];
+            o << "value              " << format(se.value, 6) << ";\ninterval           (" << format(se.intervalLow, 6)
+              << " " << format(se.intervalHigh, 6) << ");\nheldOutGap         " << format(se.heldOutGap, 6)
+              << ";\nreduction          " << format(se.reduction, 6) << ";\n";
+        }
+        o << "simulations        " << out.simulations << ";\n";
+    });
+    writeFileAtomically(dir / "explainGap.report", [&](std::ostream& o) {
+        for (const auto& line : log_) o << line << "\n";
+    });
+
+    // The augmented case: the effect switched on with its fitted size, the baseline re-fitted.
+    if (effect) {
+        const fs::path augmented = dir / "augmentedCase";
+        fs::remove_all(augmented);
+        fs::create_directories(augmented);
+        for (const char* sub : {"system", "constant"})
+            fs::copy(s_.targetCase / sub, augmented / sub, fs::copy_options::recursive);
+        for (int j = 0; j < nb_; ++j) {
+            const auto& b = s_.baseline[static_cast<std::size_t>(j)];
+            setEntryInFile(augmented / b.where.file, b.where.entry, formatNumber(effect->values[static_cast<std::size_t>(j)]));
+        }
+        for (const auto& t : s_.tied)
+            setEntryInFile(augmented / t.file, t.entry, formatNumber(t.factor * effect->values[t.parameter]));
+        const std::string& name = s_.effects[static_cast<std::size_t>(effectIndex)];
+        const EffectDescriptor& d = findEffect(name, "");
+        writeFileAtomically(augmented / "constant/modelEffects", [&](std::ostream& o) {
+            o << "FoamFile { format ascii; class dictionary; object modelEffects; }\n\n"
+              << "// Written by explainGap (" << s_.directory.filename().string() << "): " << d.physics << ".\n"
+              << "// " << out.sentence << "\n"
+              << name << "\n{\n    " << d.parameter << " " << formatNumber(effect->values[static_cast<std::size_t>(nb_ + effectIndex)])
+              << ";\n";
+            for (const auto& [entry, value] : s_.effectFixed[name]) o << "    " << entry << " " << value << ";\n";
+            o << "}\n";
+        });
+    }
+
+    // Plots: normalised residuals before/after, and the mean curves.
+    try {
+        std::vector<std::vector<double>> rows;
+        std::string labels;
+        for (std::size_t i = 0; i < obs_.size(); ++i) {
+            rows.push_back({static_cast<double>(i), hb[static_cast<int>(i)], ha[static_cast<int>(i)]});
+            labels += std::string(i ? ", " : "") + "\"" + featureName(obs_[i]) + "\" " + std::to_string(i);
+        }
+        std::ostringstream g;
+        g << stats::gnuplotDataBlock("z", rows) << "set title "
+          << stats::gnuplotString("Held-out specimens: feature error in standard errors (measured - simulated)")
+          << "\nset style data histogram\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
+          << "set xtics (" << labels << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
+          << "plot $z using 2 title \"baseline re-fitted\" " << stats::seriesColour(0) << ", $z using 3 title "
+          << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << " "
+          << stats::seriesColour(1) << "\n";
+        stats::renderPng(g.str(), dir / "residuals.png", 900, 600);
+        if (curves_) {
+            const double upTo = 1.6 * held_.features.value[peakDisplacement];
+            const int n = 80;
+            const auto measured = meanCurve(held_.displacement, held_.force, upTo, n);
+            const auto before = meanCurve(baseline.runs.displacement, baseline.runs.force, upTo, n);
+            const auto withEffect = meanCurve(afterRuns.displacement, afterRuns.force, upTo, n);
+            std::vector<std::vector<double>> c;
+            for (int i = 0; i < n; ++i)
+                c.push_back({1e3 * upTo * i / (n - 1), 1e-3 * measured[static_cast<std::size_t>(i)],
+                             1e-3 * before[static_cast<std::size_t>(i)], 1e-3 * withEffect[static_cast<std::size_t>(i)]});
+            std::ostringstream p;
+            p << stats::gnuplotDataBlock("c", c) << "set title "
+              << stats::gnuplotString("Mean force-displacement curves, held-out specimens (aligned at contact onset)")
+              << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset grid\n"
+              << stats::legendBelowPlot(3) << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
+              << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0) << " title \"baseline re-fitted\", "
+              << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
+              << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
+            stats::renderPng(p.str(), dir / "curves.png", 900, 650);
+        }
+    } catch (const UserError& e) {
+        say(std::string("plots not drawn: ") + e.what());
+    }
+}
+
+}  // namespace
+
+ExplainOutcome explainGap(ExplainStudy study, int jobs)
+{
+    Analysis analysis(std::move(study), jobs);
+    return analysis.execute();
+}
+
+}  // namespace rockfrac::explain

@@ -1,0 +1,54 @@
+#pragma once
+// explainGap: from a case and measured data, (1) measure the gap, (2) decide
+// whether it exceeds the model's own scatter, (3) screen every candidate effect
+// by a score test (its sensitivity projected out of the baseline parameters'),
+// (4) confirm the best by a joint refit judged on held-out specimens and an
+// information criterion, and (5) write the augmented case, the gap tables, the
+// plots and one sentence. docs/explainGap.md gives the method in full.
+#include <string>
+#include <vector>
+
+#include "explain/explainStudy.hpp"
+
+namespace rockfrac::explain {
+
+enum class Verdict {
+    noGapBeyondScatter,  // the baseline, re-fitted, is within the model's own scatter
+    explained,           // one effect (or one best of a kept set) explains the gap
+    indistinguishable,   // two or more effects explain it equally and the data cannot tell them apart
+    unexplained          // the gap is real and no effect of the library closes it
+};
+const char* verdictName(Verdict v);
+
+struct ScreenedEffect {
+    std::string name;
+    double score = 0.0;       // chi-square reduction of the linearised fit
+    double pValue = 1.0;
+    double amplitude = 0.0;   // linearised estimate of the parameter change
+    bool wrongSign = false;   // the data want it outside its physical bounds
+    bool confirmed = false;   // refit ran
+    double value = 0.0;       // refitted parameter
+    double intervalLow = 0.0, intervalHigh = 0.0;  // 90 % (linearised)
+    double heldOutGap = 0.0;  // RMS of the normalised held-out feature errors after the refit
+    double reduction = 0.0;   // 1 - heldOutGap / baseline's
+    double aic = 0.0;         // calibration half
+    bool kept = false;
+};
+
+struct ExplainOutcome {
+    Verdict verdict = Verdict::noGapBeyondScatter;
+    std::string sentence;
+    std::string effect;                    // explained: the effect
+    std::vector<std::string> alternatives;  // indistinguishable: the effects
+    std::string separatingMeasurement;     // indistinguishable: what would separate them
+    double baselineChiSquare = 0.0, baselinePValue = 1.0;
+    double baselineHeldOutGap = 0.0;
+    std::vector<ScreenedEffect> screened;
+    int simulations = 0;
+};
+
+// Run the analysis (simulations through runCases, resumable) and write its outputs
+// into the study directory; `jobs` overrides the study's.
+ExplainOutcome explainGap(ExplainStudy study, int jobs);
+
+}  // namespace rockfrac::explain

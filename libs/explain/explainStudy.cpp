@@ -1,0 +1,244 @@
+#include "explain/explainStudy.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/dictionary.hpp"
+#include "core/dictionaryEditor.hpp"
+#include "core/error.hpp"
+#include "effects/modelEffect.hpp"
+#include "explain/responseFeatures.hpp"
+
+namespace rockfrac::explain {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& file)
+{
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+fs::path caseRelative(const Dictionary& dict, const fs::path& studyDir, const std::string& key)
+{
+    const fs::path p = dict.get<std::string>(key);
+    const fs::path full = (p.is_absolute() ? p : studyDir / p).lexically_normal();
+    return full;
+}
+
+fs::path existingCase(const Dictionary& dict, const fs::path& studyDir)
+{
+    const fs::path c = caseRelative(dict, studyDir, "case");
+    if (!fs::is_directory(c / "system") || !fs::is_directory(c / "constant"))
+        throw UserError(dict.location("case").str() + ": '" + c.string() +
+                        "' is not a case (no system/ and constant/); give the model case to run");
+    return c;
+}
+
+calibration::SeedList readSeeds(const Dictionary& dict, const fs::path& caseDir, std::size_t minimum,
+                                const std::string& why)
+{
+    if (!dict.isDict("seeds"))
+        throw UserError(dict.fileName() + ": 'seeds { file system/voronoiMeshDict; entry seed; values (1 2 3 4); }' " +
+                        "is required: " + why);
+    const Dictionary& s = dict.subDict("seeds");
+    calibration::SeedList seeds;
+    seeds.file = s.get<std::string>("file");
+    seeds.entry = s.get<std::string>("entry");
+    for (double v : s.get<std::vector<double>>("values")) seeds.values.push_back(formatNumber(v));
+    if (seeds.values.size() < minimum)
+        throw UserError(s.location("values").str() + ": " + std::to_string(seeds.values.size()) +
+                        " seeds; at least " + std::to_string(minimum) + " are needed: " + why);
+    const fs::path file = caseDir / seeds.file;
+    if (!fs::is_regular_file(file) || !hasTextEntry(readText(file), seeds.entry, file.string()))
+        throw UserError(s.location("entry").str() + ": the case has no entry '" + seeds.entry + "' in '" +
+                        file.string() + "'");
+    return seeds;
+}
+
+void readCommands(const Dictionary& dict, std::string& prepare, std::string& command, int& jobs)
+{
+    prepare = dict.getOrDefault<std::string>("prepare", "");
+    command = dict.get<std::string>("command");
+    jobs = static_cast<int>(dict.getScalarOrDefault("jobs", 1, Bounds::closed(1, 256)));
+}
+
+}  // namespace
+
+calibration::CalibrationStudy ExplainStudy::runStudy() const
+{
+    calibration::CalibrationStudy s;
+    s.directory = simulations;
+    s.dictionary = dictionary;
+    s.model = "dem";
+    s.targetCase = targetCase;
+    s.prepareCommand = prepareCommand;
+    s.command = command;
+    s.jobs = jobs;
+    for (const auto& b : baseline) s.parameters.push_back(b.where);
+    for (const std::string& name : effects) {
+        const EffectDescriptor& d = findEffect(name, dictionary.string());
+        calibration::CalibratedParameter p;
+        p.name = name;
+        p.file = "constant/modelEffects";
+        p.entry = name + "/" + d.parameter;
+        p.unit = d.unit;
+        p.low = d.low;
+        p.high = d.high;
+        s.parameters.push_back(p);
+    }
+    s.tied = tied;
+    s.seeds = seeds;
+    s.responseFile = responseFile;
+    s.forceColumn = forceColumn;
+    return s;
+}
+
+ExplainStudy readExplainStudy(const fs::path& studyDirectory)
+{
+    ExplainStudy s;
+    s.directory = studyDirectory;
+    s.dictionary = studyDirectory / "system/explainGapDict";
+    if (!fs::is_regular_file(s.dictionary))
+        throw UserError("missing '" + s.dictionary.string() +
+                        "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
+    const Dictionary dict = Dictionary::readFile(s.dictionary);
+    s.targetCase = existingCase(dict, studyDirectory);
+    s.measurementsFile = caseRelative(dict, studyDirectory, "measurements");
+    if (!fs::is_regular_file(s.measurementsFile))
+        throw UserError(dict.location("measurements").str() + ": no measurements file '" +
+                        s.measurementsFile.string() + "'");
+    s.measurements = stats::readMeasurements(s.measurementsFile);
+    readCommands(dict, s.prepareCommand, s.command, s.jobs);
+    s.simulations = dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
+    s.seeds = readSeeds(dict, s.targetCase, 2,
+                        "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
+
+    if (!dict.isDict("baseline") || dict.subDict("baseline").keys().empty())
+        throw UserError(dict.fileName() +
+                        ": 'baseline { tensileStrength { entry bond/tensileStrength; range (10e6 60e6); } }' is "
+                        "required: the parameters calibrated as usual, re-fitted with each candidate effect");
+    for (const Entry& e : dict.subDict("baseline").entries()) {
+        if (!e.isDict())
+            throw UserError(e.keywordLocation.str() + ": baseline parameter '" + e.keyword +
+                            "' must be a dictionary { entry ...; range (low high); }");
+        const Dictionary& d = *e.dict;
+        BaselineParameter b;
+        b.where.name = e.keyword;
+        b.where.file = d.getOrDefault<std::string>("file", "constant/rockProperties");
+        b.where.entry = d.get<std::string>("entry");
+        b.where.unit = d.getOrDefault<std::string>("unit", "-");
+        const auto range = d.get<std::vector<double>>("range");
+        if (range.size() != 2 || !(range[0] < range[1]))
+            throw UserError(d.location("range").str() + ": range must be (low high) with low < high");
+        b.where.low = range[0];
+        b.where.high = range[1];
+        b.relativeStep = d.getScalarOrDefault("relativeStep", 0.1, Bounds::open(0, 1));
+        const fs::path file = s.targetCase / b.where.file;
+        if (!fs::is_regular_file(file) || !hasTextEntry(readText(file), b.where.entry, file.string()))
+            throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry + "' in '" +
+                            file.string() + "'");
+        s.baseline.push_back(b);
+    }
+    if (dict.isDict("tied"))
+        for (const Entry& e : dict.subDict("tied").entries()) {
+            const Dictionary& d = *e.dict;
+            calibration::TiedEntry t;
+            t.name = e.keyword;
+            t.entry = d.get<std::string>("entry");
+            t.factor = d.getScalar("factor", Bounds::positive());
+            const std::string of = d.get<std::string>("of");
+            std::size_t i = 0;
+            while (i < s.baseline.size() && s.baseline[i].where.name != of) ++i;
+            if (i == s.baseline.size())
+                throw UserError(d.location("of").str() + ": tied entry '" + e.keyword + "': '" + of +
+                                "' is not a baseline parameter");
+            t.parameter = i;
+            t.file = s.baseline[i].where.file;
+            s.tied.push_back(t);
+        }
+
+    s.effects = dict.get<std::vector<std::string>>("effects");
+    if (s.effects.empty())
+        throw UserError(dict.location("effects").str() + ": no candidate effects; name some of the library's");
+    const Dictionary* settings = dict.isDict("effectSettings") ? &dict.subDict("effectSettings") : nullptr;
+    for (const std::string& name : s.effects) {
+        const EffectDescriptor& d = findEffect(name, dict.location("effects").str());
+        for (const std::string& fixed : d.fixedEntries) {
+            const std::string key = name + "/" + fixed;
+            if (!settings || !settings->found(key))
+                throw UserError(dict.fileName() + ": effectSettings/" + key + " is missing: effect '" + name +
+                                "' needs '" + fixed + "' (docs/explainGap.md lists what each effect needs, e.g. "
+                                "contactCrumbling depth: about one cell size in m; seatingOffset closureForce: "
+                                "about 10 % of the failure load in N; bondStrengthScatter seed: a whole number)");
+            s.effectFixed[name][fixed] = valueText(settings->entry(key));
+        }
+    }
+    if (dict.found("features")) {
+        for (const std::string& f : dict.get<std::vector<std::string>>("features")) {
+            const int index = featureIndex(f);
+            if (index < 0)
+                throw UserError(dict.location("features").str() + ": unknown feature '" + f +
+                                "'; known: peakForce peakForceSpread peakDisplacement secantStiffness toeIndex "
+                                "softening");
+            s.requestedFeatures.push_back(index);
+        }
+    }
+    if (dict.found("response")) s.responseFile = dict.get<std::string>("response");
+    s.heldOutFraction = dict.getScalarOrDefault("heldOut", 0.5, Bounds::open(0, 1));
+    s.minimumGapReduction = dict.getScalarOrDefault("minimumGapReduction", 0.3, Bounds::open(0, 1));
+    s.significance = dict.getScalarOrDefault("significance", 0.01, Bounds::open(0, 0.5));
+    return s;
+}
+
+calibration::CalibrationStudy TwinStudy::runStudy() const
+{
+    calibration::CalibrationStudy s;
+    s.directory = directory;
+    s.dictionary = dictionary;
+    s.model = "dem";
+    s.targetCase = targetCase;
+    s.prepareCommand = prepareCommand;
+    s.command = command;
+    s.jobs = jobs;
+    s.seeds = seeds;
+    s.responseFile = responseFile;
+    s.forceColumn = "force";
+    return s;
+}
+
+TwinStudy readTwinStudy(const fs::path& studyDirectory)
+{
+    TwinStudy s;
+    s.directory = studyDirectory;
+    s.dictionary = studyDirectory / "system/twinDataDict";
+    if (!fs::is_regular_file(s.dictionary))
+        throw UserError("missing '" + s.dictionary.string() +
+                        "': a twin-data study is a directory with system/twinDataDict (docs/explainGap.md)");
+    const Dictionary dict = Dictionary::readFile(s.dictionary);
+    s.targetCase = existingCase(dict, studyDirectory);
+    readCommands(dict, s.prepareCommand, s.command, s.jobs);
+    s.seeds = readSeeds(dict, s.targetCase, 1, "one Voronoi seed per synthetic specimen");
+    if (dict.isDict("effects")) {
+        const Dictionary& effects = dict.subDict("effects");
+        ModelEffects::read(effects);  // checks names and values now
+        for (const Entry& e : effects.entries()) {
+            s.hiddenEffects.push_back(e.keyword);
+            s.hiddenEffectsText += toString(e, 0) + "\n";
+        }
+    }
+    const Dictionary& noise = dict.subDict("noise");
+    s.forceNoise = noise.getScalar("force", Bounds::closed(0, 0.5));
+    s.displacementNoise = noise.getScalar("displacement", Bounds::closed(0, 1e-3));
+    s.noiseSeed = noise.get<std::uint64_t>("seed");
+    s.output = dict.get<std::string>("output");
+    s.material = dict.getOrDefault<std::string>("material", "granite");
+    if (dict.found("response")) s.responseFile = dict.get<std::string>("response");
+    return s;
+}
+
+}  // namespace rockfrac::explain

@@ -1,0 +1,71 @@
+#pragma once
+// The inputs of explainGap (system/explainGapDict) and of the twin-data generator
+// (system/twinDataDict), read and checked before anything runs (docs/explainGap.md).
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "calibration/calibrationStudy.hpp"
+#include "stats/measurements.hpp"
+
+namespace rockfrac::explain {
+
+// A baseline parameter: calibrated as usual, re-fitted with every candidate effect.
+struct BaselineParameter {
+    calibration::CalibratedParameter where;  // file, entry, unit, range
+    double relativeStep = 0.1;               // trial step for its sensitivity
+};
+
+struct ExplainStudy {
+    std::filesystem::path directory, dictionary;
+    std::filesystem::path targetCase;
+    std::filesystem::path measurementsFile;
+    // Where the simulations are kept (<simulations>/runs); studies of the same model case
+    // may share it, so that the baseline and its sensitivities are run once.
+    std::filesystem::path simulations;
+    stats::MeasurementSet measurements;
+    std::string prepareCommand, command;
+    int jobs = 1;
+    calibration::SeedList seeds;  // the model's own scatter: every evaluation runs every seed
+    std::vector<BaselineParameter> baseline;
+    std::vector<calibration::TiedEntry> tied;
+    std::vector<std::string> effects;                                      // names from the library
+    std::map<std::string, std::map<std::string, std::string>> effectFixed;  // effect -> entry -> value
+    std::vector<int> requestedFeatures;                                    // empty: every available one
+    std::filesystem::path responseFile = "postProcessing/plateForce/0/plateForce.dat";
+    std::string forceColumn = "force", displacementColumn = "gapChange";
+    double heldOutFraction = 0.5;
+    double minimumGapReduction = 0.3;
+    double significance = 0.01;
+    double indistinguishableCosine = 0.95;
+
+    // A calibration study over baseline + effect parameters, for the runCases helpers.
+    calibration::CalibrationStudy runStudy() const;
+};
+
+ExplainStudy readExplainStudy(const std::filesystem::path& studyDirectory);
+
+// The twin-data generator: the model case, its hidden effects, the specimens'
+// seeds and the noise; the label goes to <study>/hiddenLabel only.
+struct TwinStudy {
+    std::filesystem::path directory, dictionary, targetCase;
+    std::string prepareCommand, command;
+    int jobs = 1;
+    calibration::SeedList seeds;  // one specimen per seed
+    std::string hiddenEffectsText;  // the body of constant/modelEffects ("" = none)
+    std::vector<std::string> hiddenEffects;
+    double forceNoise = 0.0;         // relative standard deviation of each force sample [-]
+    double displacementNoise = 0.0;  // standard deviation of each displacement sample [m]
+    std::uint64_t noiseSeed = 1;
+    std::filesystem::path output;  // the measurements directory, relative to the study
+    std::filesystem::path responseFile = "postProcessing/plateForce/0/plateForce.dat";
+    std::string material = "granite";
+
+    calibration::CalibrationStudy runStudy() const;
+};
+
+TwinStudy readTwinStudy(const std::filesystem::path& studyDirectory);
+
+}  // namespace rockfrac::explain

@@ -1,0 +1,162 @@
+#include "explain/responseFeatures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "stats/descriptive.hpp"
+
+namespace rockfrac::explain {
+
+namespace {
+
+const char* const names[nFeatures] = {"peakForce",       "peakForceSpread", "peakDisplacement",
+                                      "secantStiffness", "toeIndex",        "softening"};
+const char* const units[nFeatures] = {"N", "N", "m", "N/m", "-", "m"};
+
+// Displacement where the force first reaches `level` on the way up to index `last`.
+std::optional<double> firstCrossing(const std::vector<double>& d, const std::vector<double>& f, double level,
+                                    std::size_t last)
+{
+    for (std::size_t i = 0; i <= last && i < f.size(); ++i)
+        if (f[i] >= level) {
+            if (i == 0) return d[0];
+            const double t = (level - f[i - 1]) / (f[i] - f[i - 1]);
+            return d[i - 1] + t * (d[i] - d[i - 1]);
+        }
+    return std::nullopt;
+}
+
+// Force of a curve at onset-aligned displacement x (0 before the onset, last value after the end).
+double forceAt(const std::vector<double>& d, const std::vector<double>& f, double x)
+{
+    if (d.empty() || x <= d.front()) return f.empty() ? 0.0 : f.front();
+    for (std::size_t i = 1; i < d.size(); ++i)
+        if (d[i] >= x) {
+            const double span = d[i] - d[i - 1];
+            const double t = span > 0 ? (x - d[i - 1]) / span : 1.0;
+            return f[i - 1] + t * (f[i] - f[i - 1]);
+        }
+    return f.back();
+}
+
+}  // namespace
+
+const char* featureName(int feature)
+{
+    return names[feature];
+}
+const char* featureUnit(int feature)
+{
+    return units[feature];
+}
+int featureIndex(const std::string& name)
+{
+    for (int f = 0; f < nFeatures; ++f)
+        if (name == names[f]) return f;
+    return -1;
+}
+
+std::optional<CurveFeatures> curveFeatures(const std::vector<double>& d, const std::vector<double>& f,
+                                           std::string* whyNot)
+{
+    auto fail = [&](const std::string& why) -> std::optional<CurveFeatures> {
+        if (whyNot) *whyNot = why;
+        return std::nullopt;
+    };
+    if (d.size() != f.size() || f.size() < 4) return fail("fewer than 4 points");
+    const std::size_t ip = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+    const double fp = f[ip];
+    if (!(fp > 0)) return fail("no positive force");
+    const auto d0 = firstCrossing(d, f, onsetFraction * fp, ip);
+    const auto d30 = firstCrossing(d, f, 0.3 * fp, ip);
+    const auto d70 = firstCrossing(d, f, 0.7 * fp, ip);
+    if (!d0 || !d30 || !d70 || !(*d70 > *d30) || !(*d30 >= *d0)) return fail("no rise from contact to the peak");
+    std::optional<double> dDrop;
+    for (std::size_t i = ip + 1; i < f.size(); ++i)
+        if (f[i] < 0.5 * fp) {
+            const double t = (f[i - 1] - 0.5 * fp) / (f[i - 1] - f[i]);
+            dDrop = d[i - 1] + t * (d[i] - d[i - 1]);
+            break;
+        }
+    if (!dDrop) return fail("no load drop: the force never falls below half of its peak after the peak");
+    CurveFeatures c;
+    c.peakForce = fp;
+    c.peakDisplacement = d[ip] - *d0;
+    c.secantStiffness = 0.4 * fp / (*d70 - *d30);
+    const double initialCompliance = (*d30 - *d0) / ((0.3 - onsetFraction) * fp);
+    c.toeIndex = initialCompliance * c.secantStiffness;
+    c.softening = *dDrop - d[ip];
+    return c;
+}
+
+FeatureSummary summarise(const std::vector<CurveFeatures>& curves)
+{
+    if (curves.empty()) throw std::invalid_argument("summarise: no curves");
+    FeatureSummary s;
+    s.specimens = static_cast<int>(curves.size());
+    const double n = static_cast<double>(curves.size());
+    auto column = [&](double CurveFeatures::*member) {
+        stats::Sample v;
+        for (const auto& c : curves) v.push_back(c.*member);
+        return v;
+    };
+    const stats::Sample peaks = column(&CurveFeatures::peakForce);
+    const double peakSd = stats::standardDeviation(peaks);
+    s.value[peakForce] = stats::mean(peaks);
+    s.standardError[peakForce] = peakSd / std::sqrt(n);
+    s.value[peakForceSpread] = peakSd;
+    s.standardError[peakForceSpread] = n > 1 ? peakSd / std::sqrt(2.0 * (n - 1)) : peakSd;
+    const std::pair<Feature, double CurveFeatures::*> means[] = {{peakDisplacement, &CurveFeatures::peakDisplacement},
+                                                                 {secantStiffness, &CurveFeatures::secantStiffness},
+                                                                 {toeIndex, &CurveFeatures::toeIndex},
+                                                                 {softening, &CurveFeatures::softening}};
+    for (const auto& [feature, member] : means) {
+        const stats::Sample v = column(member);
+        s.value[feature] = stats::mean(v);
+        s.standardError[feature] = stats::standardDeviation(v) / std::sqrt(n);
+    }
+    s.available.fill(true);
+    return s;
+}
+
+FeatureSummary summariseFailureLoads(const std::vector<double>& loads)
+{
+    if (loads.empty()) throw std::invalid_argument("summariseFailureLoads: no loads");
+    FeatureSummary s;
+    s.specimens = static_cast<int>(loads.size());
+    const double n = static_cast<double>(loads.size());
+    const double sd = stats::standardDeviation(loads);
+    s.value[peakForce] = stats::mean(loads);
+    s.standardError[peakForce] = sd / std::sqrt(n);
+    s.value[peakForceSpread] = sd;
+    s.standardError[peakForceSpread] = n > 1 ? sd / std::sqrt(2.0 * (n - 1)) : sd;
+    s.available[peakForce] = s.available[peakForceSpread] = true;
+    return s;
+}
+
+std::vector<double> meanCurve(const std::vector<std::vector<double>>& displacements,
+                              const std::vector<std::vector<double>>& forces, double upTo, int n)
+{
+    std::vector<double> mean(static_cast<std::size_t>(n), 0.0);
+    std::size_t used = 0;
+    for (std::size_t s = 0; s < displacements.size(); ++s) {
+        const auto& d = displacements[s];
+        const auto& f = forces[s];
+        if (f.empty()) continue;
+        const double fp = *std::max_element(f.begin(), f.end());
+        const std::size_t ip = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+        const auto d0 = firstCrossing(d, f, onsetFraction * fp, ip);
+        if (!d0) continue;
+        for (int i = 0; i < n; ++i) {
+            const double x = *d0 + upTo * i / std::max(1, n - 1);
+            mean[static_cast<std::size_t>(i)] += forceAt(d, f, x);
+        }
+        ++used;
+    }
+    if (used > 0)
+        for (double& v : mean) v /= static_cast<double>(used);
+    return mean;
+}
+
+}  // namespace rockfrac::explain

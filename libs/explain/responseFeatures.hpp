@@ -1,0 +1,59 @@
+#pragma once
+// What a set of force–displacement curves (or only failure loads) says, as a few
+// numbers that the model effects move in recognisably different ways
+// (docs/explainGap.md, "Features"):
+//
+//   peakForce          mean peak (failure) force [N]
+//   peakForceSpread    standard deviation of the peak forces [N]
+//   peakDisplacement   mean displacement at the peak [m]
+//   secantStiffness    mean secant stiffness between 30 % and 70 % of the peak [N/m]
+//   toeIndex           mean ratio of the initial compliance (onset to 30 %) to the secant one:
+//                      1 for a straight rise, > 1 for a soft start (toe) [-]
+//   softening          mean displacement from the peak until the force is below half of it [m]
+//
+// Displacements are measured from the contact onset: the first point where the force
+// reaches onsetFraction (2 %) of the curve's peak, interpolated. Curves are aligned there
+// and never shifted to fit.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rockfrac::explain {
+
+enum Feature { peakForce, peakForceSpread, peakDisplacement, secantStiffness, toeIndex, softening };
+constexpr int nFeatures = 6;
+const char* featureName(int feature);
+const char* featureUnit(int feature);
+// The feature called name; -1 when there is none.
+int featureIndex(const std::string& name);
+
+constexpr double onsetFraction = 0.02;
+
+struct CurveFeatures {
+    double peakForce = 0.0, peakDisplacement = 0.0, secantStiffness = 0.0, toeIndex = 0.0, softening = 0.0;
+};
+
+// The features of one curve (displacement ascending in time, force compression
+// positive). std::nullopt with the reason when the curve has no rise to a peak or
+// no drop below half of it after the peak.
+std::optional<CurveFeatures> curveFeatures(const std::vector<double>& displacement,
+                                           const std::vector<double>& force, std::string* whyNot = nullptr);
+
+// Summary features of a set of specimens: value and standard error of each; a
+// feature without data (failure loads only) is marked unavailable.
+struct FeatureSummary {
+    std::array<double, nFeatures> value{};
+    std::array<double, nFeatures> standardError{};
+    std::array<bool, nFeatures> available{};
+    int specimens = 0;
+};
+FeatureSummary summarise(const std::vector<CurveFeatures>& curves);
+FeatureSummary summariseFailureLoads(const std::vector<double>& failureLoads);
+
+// The mean curve of a set, force on a common grid of onset-aligned displacement
+// [0, upTo] (n points), for the normalised RMS gap between two sets.
+std::vector<double> meanCurve(const std::vector<std::vector<double>>& displacements,
+                              const std::vector<std::vector<double>>& forces, double upTo, int n);
+
+}  // namespace rockfrac::explain

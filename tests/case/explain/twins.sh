@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# explainGap on twin data: the 60-cell disc of tutorials/explainGap makes
+# "measured" curves (24 specimens on other Voronoi seeds, noise on every sample)
+# with one effect hidden, or none; explainGap must name the hidden effect and
+# shrink the held-out gap by >= 30 %, raise no alarm without one, and report two
+# effects that the data cannot tell apart as such. All scenarios share the
+# baseline and sensitivity runs (explainGapDict 'simulations').
+source "$(dirname "$0")/../caseTestFunctions"
+export OMP_NUM_THREADS=1
+copyTutorial tutorials/explainGap "$work/tutorial"
+cd "$work/tutorial"
+
+# The neutral effects file is the baseline bit for bit.
+cp -r bdt neutral
+cat > neutral/constant/modelEffects <<'DICT'
+FoamFile { format ascii; class dictionary; object modelEffects; }
+contactCrumbling    { strengthLoss 0; depth 8e-3; }
+machineCompliance   { compliance 0; }
+seatingOffset       { depth 0; closureForce 1500; }
+bondStrengthScatter { inverseModulus 0; seed 3; }
+rateDamping         { betaFactor 1; }
+plateFriction       { frictionFactor 1; }
+DICT
+for c in bdt neutral; do
+    (cd $c && meshRock > log.meshRock 2>&1 && voronoiMesh > log.voronoiMesh 2>&1 &&
+        bondedDemFoam > log.bondedDemFoam 2>&1) || fail "$c: the run failed"
+done
+cut -f1-11 bdt/postProcessing/plateForce/0/plateForce.dat > a.dat
+cut -f1-11 neutral/postProcessing/plateForce/0/plateForce.dat > b.dat
+cmp -s a.dat b.dat || fail "constant/modelEffects with every effect neutral changed plateForce.dat"
+echo "neutral effects: plateForce.dat identical to the baseline's"
+rm -rf neutral bdt/[0-9]* bdt/postProcessing bdt/VTK bdt/constant/voronoiMesh
+
+# scenario <name> <hidden effects> <expected verdict> <expected effect(s)> [features]
+scenario()
+{
+    local name=$1 hidden=$2 verdict=$3 expected=$4 features=$5
+    mkdir -p "$name/twin/system" "$name/study/system"
+    sed -e "s#^case .*#case \"../../bdt\";#" -e '/^effects/,/^}/d' twin/system/twinDataDict > "$name/twin/system/twinDataDict"
+    echo "effects { $hidden }" >> "$name/twin/system/twinDataDict"
+    sed -e "s#^case .*#case \"../../bdt\";#" study/system/explainGapDict > "$name/study/system/explainGapDict"
+    echo 'simulations "../../simulations";' >> "$name/study/system/explainGapDict"
+    [ -n "$features" ] && echo "features ($features);" >> "$name/study/system/explainGapDict"
+    makeTwinData -case "$name/twin" > "$name/log.makeTwinData" 2>&1 || fail "$name: makeTwinData failed"
+    explainGap -case "$name/study" -jobs 2 > "$name/log.explainGap" 2>&1 || fail "$name: explainGap failed: $(tail -1 $name/log.explainGap)"
+    local result="$name/study/explainGap.result" got effect alternatives reduction
+    got=$(caseDict -case "$name/study" explainGap.result -entry verdict -value)
+    effect=$(caseDict -case "$name/study" explainGap.result -entry effect -value | tr -d '"')
+    alternatives=$(caseDict -case "$name/study" explainGap.result -entry alternatives -value)
+    echo "$name: hidden [$hidden] -> $got ${effect}${alternatives}"
+    grep "gap is\|no missing\|cannot tell" "$name/study/explainGap.report" | sed 's/^/    /'
+    [ "$got" = "$verdict" ] || fail "$name: verdict $got, expected $verdict"
+    case "$verdict" in
+        explained)
+            [ "$effect" = "$expected" ] || fail "$name: named $effect, expected $expected"
+            reduction=$(caseDict -case "$name/study" explainGap.result -entry reduction -value)
+            awk -v r="$reduction" 'BEGIN { exit !(r >= 0.3) }' || fail "$name: held-out gap fell by $reduction < 0.3"
+            [ -f "$name/study/augmentedCase/constant/modelEffects" ] || fail "$name: no augmented case"
+            grep -q "^$expected" "$name/study/augmentedCase/constant/modelEffects" || fail "$name: augmented case lacks $expected" ;;
+        indistinguishable)
+            for e in $expected; do
+                echo "$alternatives" | grep -qw "$e" || fail "$name: $e not among the alternatives $alternatives"
+            done
+            [ ! -d "$name/study/augmentedCase" ] || fail "$name: an augmented case was written for an undecided gap" ;;
+        noGapBeyondScatter)
+            [ ! -d "$name/study/augmentedCase" ] || fail "$name: an augmented case was written without a gap" ;;
+    esac
+}
+
+scenario none       ""                                                    noGapBeyondScatter ""
+scenario seating    "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset
+scenario compliance "machineCompliance { compliance 5e-9; }"              explained machineCompliance
+scenario crumbling  "contactCrumbling { strengthLoss 0.8; depth 8e-3; }"      explained contactCrumbling
+scenario scatter    "bondStrengthScatter { inverseModulus 0.6; seed 5; }"   explained bondStrengthScatter
+# Displacement at failure but no curves: seating and compliance both only add to it.
+scenario ambiguous  "seatingOffset { depth 0.15e-3; closureForce 1500; }" indistinguishable \
+    "seatingOffset machineCompliance" "peakForce peakForceSpread peakDisplacement"
+grep -q "full force-displacement curves" ambiguous/study/explainGap.result ||
+    fail "ambiguous: the separating measurement should be full curves: $(grep separating ambiguous/study/explainGap.result)"
+echo "PASS"
