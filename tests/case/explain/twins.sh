@@ -31,41 +31,7 @@ cmp -s a.dat b.dat || fail "constant/modelEffects with every effect neutral chan
 echo "neutral effects: plateForce.dat identical to the baseline's"
 rm -rf neutral bdt/[0-9]* bdt/postProcessing bdt/VTK bdt/constant/voronoiMesh
 
-# scenario <name> <hidden effects> <expected verdict> <expected effect(s)> [features]
-scenario()
-{
-    local name=$1 hidden=$2 verdict=$3 expected=$4 features=$5
-    mkdir -p "$name/twin/system" "$name/study/system"
-    sed -e "s#^case .*#case \"../../bdt\";#" -e '/^effects/,/^}/d' twin/system/twinDataDict > "$name/twin/system/twinDataDict"
-    echo "effects { $hidden }" >> "$name/twin/system/twinDataDict"
-    sed -e "s#^case .*#case \"../../bdt\";#" study/system/explainGapDict > "$name/study/system/explainGapDict"
-    echo 'simulations "../../simulations";' >> "$name/study/system/explainGapDict"
-    [ -n "$features" ] && echo "features ($features);" >> "$name/study/system/explainGapDict"
-    makeTwinData -case "$name/twin" > "$name/log.makeTwinData" 2>&1 || fail "$name: makeTwinData failed"
-    explainGap -case "$name/study" -jobs 2 > "$name/log.explainGap" 2>&1 || fail "$name: explainGap failed: $(tail -1 $name/log.explainGap)"
-    local result="$name/study/explainGap.result" got effect alternatives reduction
-    got=$(caseDict -case "$name/study" explainGap.result -entry verdict -value)
-    effect=$(caseDict -case "$name/study" explainGap.result -entry effect -value | tr -d '"')
-    alternatives=$(caseDict -case "$name/study" explainGap.result -entry alternatives -value)
-    echo "$name: hidden [$hidden] -> $got ${effect}${alternatives}"
-    grep "gap is\|no missing\|cannot tell" "$name/study/explainGap.report" | sed 's/^/    /'
-    [ "$got" = "$verdict" ] || fail "$name: verdict $got, expected $verdict"
-    case "$verdict" in
-        explained)
-            [ "$effect" = "$expected" ] || fail "$name: named $effect, expected $expected"
-            reduction=$(caseDict -case "$name/study" explainGap.result -entry reduction -value)
-            awk -v r="$reduction" 'BEGIN { exit !(r >= 0.3) }' || fail "$name: held-out gap fell by $reduction < 0.3"
-            [ -f "$name/study/augmentedCase/constant/modelEffects" ] || fail "$name: no augmented case"
-            grep -q "^$expected" "$name/study/augmentedCase/constant/modelEffects" || fail "$name: augmented case lacks $expected" ;;
-        indistinguishable)
-            for e in $expected; do
-                echo "$alternatives" | grep -qw "$e" || fail "$name: $e not among the alternatives $alternatives"
-            done
-            [ ! -d "$name/study/augmentedCase" ] || fail "$name: an augmented case was written for an undecided gap" ;;
-        noGapBeyondScatter)
-            [ ! -d "$name/study/augmentedCase" ] || fail "$name: an augmented case was written without a gap" ;;
-    esac
-}
+source "$(dirname "$0")/scenarioFunctions"
 
 scenario none       ""                                                    noGapBeyondScatter ""
 scenario seating    "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset

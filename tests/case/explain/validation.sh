@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# explainGap validation (label validation, run by hand; docs/validation.md):
+# every effect of the library hidden at two sizes, and no effect, each over 3
+# independent twin data sets (other specimen seeds and other noise), on the
+# 60-cell disc of tutorials/explainGap. Writes summary.dat (scenario, verdict,
+# effect, held-out reduction) and prints the attribution accuracy per effect
+# and the false-alarm rate. It asserts nothing about the accuracy: the table is
+# the result (the case test case.explain.twins asserts the single cases).
+source "$(dirname "$0")/../caseTestFunctions"
+export OMP_NUM_THREADS=1 NO_FAIL=1
+copyTutorial tutorials/explainGap "$work/tutorial"
+cd "$work/tutorial"
+source "$(dirname "$0")/scenarioFunctions"
+rm -f summary.dat
+for k in 1 2 3; do
+    export TWIN_SEED_OFFSET=$k
+    scenario none-$k              ""                                                      noGapBeyondScatter ""
+    scenario seating-small-$k     "seatingOffset { depth 0.02e-3; closureForce 1500; }"   explained seatingOffset
+    scenario seating-large-$k     "seatingOffset { depth 0.06e-3; closureForce 1500; }"   explained seatingOffset
+    scenario compliance-small-$k  "machineCompliance { compliance 3e-9; }"                explained machineCompliance
+    scenario compliance-large-$k  "machineCompliance { compliance 8e-9; }"                explained machineCompliance
+    scenario crumbling-small-$k   "contactCrumbling { strengthLoss 0.6; depth 8e-3; }"    explained contactCrumbling
+    scenario crumbling-large-$k   "contactCrumbling { strengthLoss 0.8; depth 8e-3; }"    explained contactCrumbling
+    scenario scatter-small-$k     "bondStrengthScatter { inverseModulus 0.4; seed 5; }"   explained bondStrengthScatter
+    scenario scatter-large-$k     "bondStrengthScatter { inverseModulus 0.6; seed 5; }"   explained bondStrengthScatter
+    scenario rate-small-$k        "rateDamping { betaFactor 5; }"                         explained rateDamping
+    scenario rate-large-$k        "rateDamping { betaFactor 10; }"                        explained rateDamping
+    scenario friction-small-$k    "plateFriction { frictionFactor 0.3; }"                 explained plateFriction
+    scenario friction-large-$k    "plateFriction { frictionFactor 0.05; }"                explained plateFriction
+done
+echo "scenario / verdict / effect / held-out reduction:"
+cat summary.dat
+awk -F'\t' '{ split($1, p, "-"); e = p[1]; n[e]++;
+    hit = (e == "none") ? ($2 == "noGapBeyondScatter") :
+          (e == "seating" && $3 == "seatingOffset") || (e == "compliance" && $3 == "machineCompliance") ||
+          (e == "crumbling" && $3 == "contactCrumbling") || (e == "scatter" && $3 == "bondStrengthScatter") ||
+          (e == "rate" && $3 == "rateDamping") || (e == "friction" && $3 == "plateFriction");
+    ok[e] += hit }
+    END { for (e in n) printf "%-10s %d of %d %s\n", e, ok[e], n[e], (e == "none") ? "without a false alarm" : "attributed" }' summary.dat
