@@ -25,8 +25,8 @@ for k in 1 2 3; do
     scenario scatter-large-$k     "bondStrengthScatter { inverseModulus 0.6; seed 5; }"   explained bondStrengthScatter
     scenario rate-small-$k        "rateDamping { betaFactor 5; }"                         explained rateDamping
     scenario rate-large-$k        "rateDamping { betaFactor 10; }"                        explained rateDamping
-    scenario friction-small-$k    "plateFriction { frictionFactor 0.3; }"                 explained plateFriction
-    scenario friction-large-$k    "plateFriction { frictionFactor 0.05; }"                explained plateFriction
+    MODEL=spb EFFECTS="contactCrumbling machineCompliance plateFriction" scenario friction-small-$k "plateFriction { frictionFactor 0.3; }" explained plateFriction
+    MODEL=spb EFFECTS="contactCrumbling machineCompliance plateFriction" scenario friction-large-$k "plateFriction { frictionFactor 0.05; }" explained plateFriction
 done
 echo "scenario / verdict / effect / held-out reduction:"
 cat summary.dat

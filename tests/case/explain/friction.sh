@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# explainGap on twin data, plate friction: on a disc between flat plates the
+# rock-steel friction leaves no signature (docs/validation.md), so this scenario
+# uses the coarse irregular rock of tutorials/explainGap/spb (rock 7 of the SPB
+# set at 60 cells), where nearly frictionless plates let the rock slip and turn.
+# The hidden factor 0.05 must be attributed to plateFriction with the held-out
+# gap shrinking by >= 30 %.
+source "$(dirname "$0")/../caseTestFunctions"
+export OMP_NUM_THREADS=1
+copyTutorial tutorials/explainGap "$work/tutorial"
+cd "$work/tutorial"
+source "$(dirname "$0")/scenarioFunctions"
+MODEL=spb EFFECTS="contactCrumbling machineCompliance plateFriction" \
+    scenario friction "plateFriction { frictionFactor 0.05; }" explained plateFriction
+echo "PASS"
