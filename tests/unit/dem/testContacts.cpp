@@ -8,6 +8,7 @@
 #include "boxMeshes.hpp"
 #include "dem/demModel.hpp"
 #include "dem/gjk.hpp"
+#include "geometry/triSurface.hpp"
 
 using namespace rockfrac;
 
@@ -362,4 +363,48 @@ TEST_CASE("a cell rocking between two plates with e = 1, no friction, conserves 
                            << largest_torque);
     CHECK(largest_torque > 0.0);  // it did rock
     CHECK(largest_deviation < 1e-3 * initial);
+}
+
+TEST_CASE("a block crushed onto a floor read from an STL file moves as on the analytic plate", "[dem][wall]")
+{
+    // tests/unit/dem/data/floorPlate.stl: a 100 mm square floor at z = 0 as 32 triangles
+    // (25 mm grid). The block straddles the grid lines x = 0 and y = 0, so its cells touch
+    // triangle edges and vertices while the upper plate pushes it down and breaks bonds.
+    const TriSurface floor = readStl(std::string(ROCKFRAC_SOURCE_DIR) + "/tests/unit/dem/data/floorPlate.stl");
+    REQUIRE(floor.triangles.size() == 32);
+    DemParameters p = quietParameters();
+    p.bond_tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
+    p.bond_cohesion = 3e5;
+    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.05;  // brittle: d_f of a few um
+    const VoronoiMesh mesh = test::boxBlockMesh(2, 2, 2, {cell_size, cell_size, cell_size}, dilation);
+    DemModel analytic(mesh, p), fromStl(mesh, p);
+    double zMin = 1e300, zMax = -1e300;
+    for (const auto& v : mesh.vertices) zMin = std::min(zMin, v.z), zMax = std::max(zMax, v.z);
+    const Vec3 shift{0.0013, -0.0021, -zMin};  // off-centre over the grid lines, resting on z = 0
+    for (DemModel* model : {&analytic, &fromStl}) {
+        for (int c = 0; c < model->cells().size(); ++c)
+            model->setCellPose(c, model->cells().position[c] + shift, model->cells().orientation[c]);
+        model->addPlate({0.0, 0.0, zMax - zMin}, {0.0, 0.0, -1.0}, {0.4, 0.1, -0.5});  // pressing and shearing
+    }
+    analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    fromStl.addTriSurface(floor.points, floor.triangles);
+    const double dt = 2e-8;
+    double largest = 0.0;
+    for (int step = 0; step < 3000; ++step) {
+        analytic.step(dt);
+        fromStl.step(dt);
+        REQUIRE(analytic.status().ok());
+        REQUIRE(fromStl.status().ok());
+        largest = std::max(largest, std::fabs(analytic.wallReaction(1).z));
+    }
+    INFO("floor reaction: analytic " << analytic.wallReaction(1).z << " N, STL " << fromStl.wallReaction(1).z
+                                     << " N; broken bonds " << analytic.counters().bonds_broken);
+    CHECK(largest > 0.0);
+    CHECK(analytic.counters().bonds_broken > 0);
+    CHECK(fromStl.counters().bonds_broken == analytic.counters().bonds_broken);
+    for (int d = 0; d < 3; ++d)
+        CHECK(fromStl.wallReaction(1)[d] == Approx(analytic.wallReaction(1)[d]).margin(1e-6 * largest));
+    for (int c = 0; c < analytic.cells().size(); ++c)
+        for (int d = 0; d < 3; ++d)
+            CHECK(fromStl.cells().position[c][d] == Approx(analytic.cells().position[c][d]).margin(1e-9));
 }
