@@ -39,6 +39,10 @@ std::size_t CudaDemModel::deviceBytes() const
 {
     return 0;
 }
+std::size_t CudaDemModel::estimateDeviceBytes(const DemModel&)
+{
+    return 0;
+}
 std::string CudaDemModel::deviceName() const
 {
     return "none";

@@ -411,6 +411,56 @@ std::size_t CudaDemModel::deviceBytes() const
     return device_->bytes();
 }
 
+namespace {
+
+template <class T>
+std::size_t arrayBytes(const std::vector<T>& v)
+{
+    return v.size() * sizeof(T);
+}
+
+}  // namespace
+
+// What upload() allocates for host, from the host arrays' sizes (no device needed).
+std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
+{
+    const CellArrays& c = host.cells_;
+    const std::size_t n = c.position.size();
+    std::size_t total = arrayBytes(c.position) + arrayBytes(c.velocity) + arrayBytes(c.orientation) +
+                        arrayBytes(c.angular_velocity) + arrayBytes(c.force) + arrayBytes(c.torque) +
+                        arrayBytes(c.mass) + arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) +
+                        arrayBytes(c.bounding_radius) + arrayBytes(c.core_vertex_offset) +
+                        arrayBytes(c.core_vertices);
+    total += n * (sizeof(Mat3) + 2 * sizeof(Vec3));  // rotation, world angular velocity, position at build
+    const InterfaceArrays& f = host.interfaces_;
+    total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
+             arrayBytes(f.intact_bonds) + arrayBytes(f.normal_i) + arrayBytes(f.normal_j) +
+             arrayBytes(f.length_i) + arrayBytes(f.length_j) + arrayBytes(f.bond_area) +
+             arrayBytes(f.damping_beta) + arrayBytes(f.force_on_i) + arrayBytes(f.torque_on_i) +
+             arrayBytes(f.torque_on_j);
+    const BondArrays& b = host.bonds_;
+    total += arrayBytes(b.anchor_i) + arrayBytes(b.anchor_j) + arrayBytes(b.stage) +
+             arrayBytes(b.onset_displacement) + arrayBytes(b.onset_stress) + arrayBytes(b.rupture_displacement) +
+             arrayBytes(b.max_displacement) + arrayBytes(b.damage);
+    total += arrayBytes(host.cell_interface_offset_) + arrayBytes(host.cell_interfaces_);
+    const ContactPairArrays& p = host.pairs_;
+    total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
+             arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) +
+             arrayBytes(p.force_on_b) + arrayBytes(p.torque_on_a) + arrayBytes(p.torque_on_b) +
+             arrayBytes(p.elastic_energy) + arrayBytes(p.damping_power) + arrayBytes(p.friction_dissipation) +
+             arrayBytes(p.status) + arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
+    const WallContactArrays& w = host.wall_items_;
+    total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) + arrayBytes(w.triangles) +
+             arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) + arrayBytes(w.force_on_cell) +
+             arrayBytes(w.torque_on_cell) + arrayBytes(w.elastic_energy) + arrayBytes(w.damping_power) +
+             arrayBytes(w.friction_dissipation) + arrayBytes(w.wall_power) + arrayBytes(w.status) +
+             arrayBytes(host.cell_wall_item_offset_) + arrayBytes(host.triangle_vertices_);
+    total += (f.cell_i.size() / threads_per_block + 1) * sizeof(BondSums) +
+             (p.cell_a.size() / threads_per_block + w.cell.size() / threads_per_block + 2) * sizeof(ContactSums) +
+             (n / threads_per_block + 1) * sizeof(CellSums);
+    return total;
+}
+
 std::string CudaDemModel::deviceName() const
 {
     return device_->device_name;

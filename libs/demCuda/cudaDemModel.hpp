@@ -64,6 +64,9 @@ public:
 
     const DemModel& host() const { return host_; }
     std::size_t deviceBytes() const;  // device memory held [bytes]
+    // The device memory upload() would take for host, from its array sizes (no GPU
+    // needed; 0 in a build without CUDA). Neighbour lists as the host holds them now.
+    static std::size_t estimateDeviceBytes(const DemModel& host);
     std::string deviceName() const;
 
 private:
