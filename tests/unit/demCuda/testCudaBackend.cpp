@@ -29,8 +29,9 @@ void shake(DemModel& model, double speed, double spin, unsigned seed)
                               spin * Vec3{uniform(random), uniform(random), uniform(random)});
 }
 
-// A weakly bonded block thrown on a plate under gravity: breakage, contacts, a wall.
-DemModel eventfulCluster()
+// A weakly bonded block thrown under gravity on a plate, or on a floor of two triangles
+// (the triangulated-surface path of the wall kernel): breakage, contacts, a wall.
+DemModel eventfulCluster(bool triangulated_floor = false)
 {
     DemParameters p;
     p.bond_tensile_strength = 2e5;
@@ -41,7 +42,13 @@ DemModel eventfulCluster()
     DemModel model(
         test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation, true, {0.0, 0.0, 0.2 * dilation}),
         p);
-    model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    if (triangulated_floor) {
+        const double half = 0.05;
+        model.addTriSurface({{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}},
+                            {{{0, 1, 2}}, {{0, 2, 3}}});
+    } else {
+        model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    }
     shake(model, 0.5, 50.0, 11);
     for (int c = 0; c < model.cells().size(); ++c)
         model.setCellVelocity(c, model.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
@@ -84,19 +91,23 @@ TEST_CASE("an intact bonded block steps on the device as on the CPU, to round-of
     CHECK(gpu_host.counters().steps == cpu.counters().steps);
 }
 
-TEST_CASE("breakage, contacts and a plate on the device: close to the CPU early, same physics later",
+TEST_CASE("breakage, contacts and a wall on the device: close to the CPU early, same physics later",
           "[gpu][dem]")
 {
-    DemModel cpu = eventfulCluster();
-    DemModel gpu_host = eventfulCluster();
+    const bool triangulated = GENERATE(false, true);
+    INFO((triangulated ? "triangulated floor" : "plate"));
+    DemModel cpu = eventfulCluster(triangulated);
+    DemModel gpu_host = eventfulCluster(triangulated);
     CudaDemModel gpu(gpu_host);
     const double dt = 0.02 * cpu.rayleighTimeStep();
     int gpu_wall_contacts = 0;
+    double largest_floor_push = 0.0;
     for (int i = 0; i < 1500; ++i) {
         cpu.step(dt);
         gpu.step(dt);
         REQUIRE(gpu_host.status().ok());
         gpu_wall_contacts = std::max(gpu_wall_contacts, gpu_host.counters().wall_contacts_active);
+        largest_floor_push = std::max(largest_floor_push, -gpu_host.wallReaction(0).z);
         if (i == 100) {
             gpu.downloadState();
             const double distance = largestDistance(cpu.cells().position, gpu_host.cells().position);
@@ -110,6 +121,8 @@ TEST_CASE("breakage, contacts and a plate on the device: close to the CPU early,
     CHECK(gpu_host.counters().bonds_broken == Approx(cpu.counters().bonds_broken).epsilon(0.1));
     const double scale = std::max(cpu.energies().externalWork(), cpu.energies().kinetic());
     CHECK(std::fabs(gpu_host.energies().balance() - gpu_host.initialBalance()) < 0.01 * scale);
+    // The floor's reaction, summed on the device per wall, carried the block's impact.
+    CHECK(largest_floor_push > 0.0);
 }
 
 TEST_CASE("the device run is reproducible, and download + upload continue it unchanged", "[gpu][dem]")
