@@ -51,8 +51,8 @@ void report(const char* what, int nCells, int nBonds, std::size_t bytes, int thr
 {
     char thr[8];
     std::snprintf(thr, sizeof(thr), "%s", threads < 0 ? "gpu" : std::to_string(threads).c_str());
-    std::printf("%-28s %8d %6.1f %3s %7d %10.3f %12.4g %8.0f %10.4g\n", what, nCells, 2.0 * nBonds / nCells, thr,
-                steps, seconds, static_cast<double>(nCells) * steps / seconds,
+    std::printf("%-28s %8d %6.1f %3s %7d %10.3f %12.4g %8.0f %10.4g\n", what, nCells, 2.0 * nBonds / nCells,
+                thr, steps, seconds, static_cast<double>(nCells) * steps / seconds,
                 static_cast<double>(bytes) / nCells, dt);
     std::fflush(stdout);
 }
@@ -90,8 +90,8 @@ void intactBlock(int nCells, int steps, bool cuda = false)
         secondsFor(device, 5, dt);  // warm up: lists, caches
         double best = 1e300;
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(device, steps, dt));
-        report(name.c_str(), model.cells().size(), model.bonds().size(), device.deviceBytes(), -1, steps, best,
-               dt);
+        report(name.c_str(), model.cells().size(), model.bonds().size(), device.deviceBytes(), -1, steps,
+               best, dt);
         return;
     }
     for (int threads : {1, 2}) {

@@ -136,9 +136,9 @@ RF_HD inline CellEnergyTerms measureCell(const IntegrationArgs& a, int c, double
     CellEnergyTerms t;
     const Vec3 inertia = a.principal_inertia[c];
     const Vec3 torque_body = transposeTimes(a.rotation[c], a.torque[c]);
-    const Vec3 w = a.angular_velocity[c] - (0.5 * sync_dt) * Vec3{torque_body.x / inertia.x,
-                                                                 torque_body.y / inertia.y,
-                                                                 torque_body.z / inertia.z};
+    const Vec3 w =
+        a.angular_velocity[c] - (0.5 * sync_dt) * Vec3{torque_body.x / inertia.x, torque_body.y / inertia.y,
+                                                       torque_body.z / inertia.z};
     t.kinetic_translation = 0.5 * a.mass[c] * norm2(a.velocity[c]);
     t.kinetic_rotation = 0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
     const double check = norm2(a.position[c]) + norm2(a.velocity[c]) + norm2(w);

@@ -33,9 +33,9 @@ constexpr int threads_per_block = 256;
 void check(cudaError_t status, const char* what)
 {
     if (status != cudaSuccess)
-        throw UserError(std::string("CUDA backend: ") + what + " failed: " + cudaGetErrorString(status) +
-                        (status == cudaErrorMemoryAllocation ? " (the model does not fit in device memory)"
-                                                             : ""));
+        throw UserError(
+            std::string("CUDA backend: ") + what + " failed: " + cudaGetErrorString(status) +
+            (status == cudaErrorMemoryAllocation ? " (the model does not fit in device memory)" : ""));
 }
 
 int blocksFor(int n)
@@ -67,12 +67,14 @@ public:
     void upload(const std::vector<T>& v)
     {
         resize(v.size());
-        if (!v.empty()) check(cudaMemcpy(data_, v.data(), v.size() * sizeof(T), cudaMemcpyHostToDevice), "upload");
+        if (!v.empty())
+            check(cudaMemcpy(data_, v.data(), v.size() * sizeof(T), cudaMemcpyHostToDevice), "upload");
     }
     void download(std::vector<T>& v) const
     {
         v.resize(size_);
-        if (size_ > 0) check(cudaMemcpy(v.data(), data_, size_ * sizeof(T), cudaMemcpyDeviceToHost), "download");
+        if (size_ > 0)
+            check(cudaMemcpy(v.data(), data_, size_ * sizeof(T), cudaMemcpyDeviceToHost), "download");
     }
     void copyFrom(const DeviceArray& other)
     {
@@ -120,10 +122,10 @@ struct CellSums {
 };
 RF_HD inline CellSums combine(const CellSums& a, const CellSums& b)
 {
-    const int nf = a.non_finite_cell < 0 ? b.non_finite_cell
-                                         : (b.non_finite_cell < 0 || a.non_finite_cell < b.non_finite_cell
-                                                ? a.non_finite_cell
-                                                : b.non_finite_cell);
+    const int nf = a.non_finite_cell < 0
+                       ? b.non_finite_cell
+                       : (b.non_finite_cell < 0 || a.non_finite_cell < b.non_finite_cell ? a.non_finite_cell
+                                                                                         : b.non_finite_cell);
     return {a.kinetic_translation + b.kinetic_translation, a.kinetic_rotation + b.kinetic_rotation,
             a.gravity_work + b.gravity_work, a.max_move2 > b.max_move2 ? a.max_move2 : b.max_move2, nf};
 }
@@ -168,16 +170,21 @@ RF_HD inline ContactSums contactTerms(const ContactItemOutputs& o, int item)
 }
 
 // ---- Kernels: one thread per item, each calling the shared RF_HD function --------------
+// __launch_bounds__: the contact kernels need ~255 registers per thread (GJK, the wall
+// patch); the bound makes ptxas keep a block of threads_per_block within the register file.
+// The wall kernel's patch buffer (max_patch_points points) lives in local memory (~6 kB
+// of stack per thread).
 
-__global__ void refreshKernel(int n, const Quat* orientation, const Vec3* angular_velocity, Mat3* rotation,
-                              Vec3* angular_velocity_world)
+__global__ void __launch_bounds__(threads_per_block)
+    refreshKernel(int n, const Quat* orientation, const Vec3* angular_velocity, Mat3* rotation,
+                  Vec3* angular_velocity_world)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     if (c < n) refreshCellKinematics(orientation, angular_velocity, rotation, angular_velocity_world, c);
 }
 
 template <class Law>
-__global__ void bondKernel(BondKernelArgs a, BondSums* partials)
+__global__ void __launch_bounds__(threads_per_block) bondKernel(BondKernelArgs a, BondSums* partials)
 {
     const int k = blockIdx.x * blockDim.x + threadIdx.x;
     BondSums s{0.0, 0.0, 0.0, 0, 0};
@@ -194,7 +201,7 @@ __global__ void bondKernel(BondKernelArgs a, BondSums* partials)
 }
 
 template <class Law>
-__global__ void pairKernelCuda(PairKernelArgs a, ContactSums* partials)
+__global__ void __launch_bounds__(threads_per_block) pairKernelCuda(PairKernelArgs a, ContactSums* partials)
 {
     const int p = blockIdx.x * blockDim.x + threadIdx.x;
     ContactSums s{0.0, 0.0, 0.0, 0, 0};
@@ -206,7 +213,7 @@ __global__ void pairKernelCuda(PairKernelArgs a, ContactSums* partials)
 }
 
 template <class Law>
-__global__ void wallKernelCuda(WallKernelArgs a, ContactSums* partials)
+__global__ void __launch_bounds__(threads_per_block) wallKernelCuda(WallKernelArgs a, ContactSums* partials)
 {
     const int item = blockIdx.x * blockDim.x + threadIdx.x;
     ContactSums s{0.0, 0.0, 0.0, 0, 0};
@@ -224,9 +231,10 @@ struct WallReaction {
     double power;
 };
 
-__global__ void wallReactionKernel(int n_walls, int n_items, const WallPose* walls, const int* item_wall,
-                                   const int* item_cell, const Vec3* force_on_cell, const Vec3* torque_on_cell,
-                                   const double* wall_power, const Vec3* position, WallReaction* out)
+__global__ void __launch_bounds__(threads_per_block)
+    wallReactionKernel(int n_walls, int n_items, const WallPose* walls, const int* item_wall,
+                       const int* item_cell, const Vec3* force_on_cell, const Vec3* torque_on_cell,
+                       const double* wall_power, const Vec3* position, WallReaction* out)
 {
     const int w = blockIdx.x * blockDim.x + threadIdx.x;
     if (w >= n_walls) return;
@@ -241,13 +249,14 @@ __global__ void wallReactionKernel(int n_walls, int n_items, const WallPose* wal
     out[w] = r;
 }
 
-__global__ void gatherKernel(int n, GatherArgs a)
+__global__ void __launch_bounds__(threads_per_block) gatherKernel(int n, GatherArgs a)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     if (c < n) gatherCellForces(a, c);
 }
 
-__global__ void kickDriftKernel(int n, IntegrationArgs a, double dt, CellSums* partials)
+__global__ void __launch_bounds__(threads_per_block)
+    kickDriftKernel(int n, IntegrationArgs a, double dt, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     CellSums s{0.0, 0.0, 0.0, 0.0, -1};
@@ -255,13 +264,14 @@ __global__ void kickDriftKernel(int n, IntegrationArgs a, double dt, CellSums* p
     blockSum(s, partials);
 }
 
-__global__ void kickKernel(int n, IntegrationArgs a, double dt)
+__global__ void __launch_bounds__(threads_per_block) kickKernel(int n, IntegrationArgs a, double dt)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     if (c < n) kickCell(a, c, dt);
 }
 
-__global__ void measureKernel(int n, IntegrationArgs a, double sync_dt, CellSums* partials)
+__global__ void __launch_bounds__(threads_per_block)
+    measureKernel(int n, IntegrationArgs a, double sync_dt, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     CellSums s{0.0, 0.0, 0.0, 0.0, -1};
@@ -274,8 +284,8 @@ __global__ void measureKernel(int n, IntegrationArgs a, double sync_dt, CellSums
     blockSum(s, partials);
 }
 
-__global__ void moveSinceBuildKernel(int n, const Vec3* position, const Vec3* position_at_build,
-                                     CellSums* partials)
+__global__ void __launch_bounds__(threads_per_block)
+    moveSinceBuildKernel(int n, const Vec3* position, const Vec3* position_at_build, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
     CellSums s{0.0, 0.0, 0.0, 0.0, -1};
@@ -331,25 +341,80 @@ struct CudaDemModel::Buffers {
     std::size_t bytes() const
     {
         std::size_t total = 0;
-        for (std::size_t b :
-             {position.bytes(), velocity.bytes(), angular_velocity.bytes(), force.bytes(), torque.bytes(),
-              principal_inertia.bytes(), core_vertices.bytes(), orientation.bytes(), mass.bytes(),
-              dilation_radius.bytes(), bounding_radius.bytes(), core_vertex_offset.bytes(), rotation.bytes(),
-              angular_velocity_world.bytes(), position_at_build.bytes(), cell_i.bytes(), cell_j.bytes(),
-              bond_offset.bytes(), intact_bonds.bytes(), normal_i.bytes(), normal_j.bytes(),
-              force_on_i.bytes(), torque_on_i.bytes(), torque_on_j.bytes(), length_i.bytes(),
-              length_j.bytes(), bond_area.bytes(), damping_beta.bytes(), anchor_i.bytes(), anchor_j.bytes(),
-              stage.bytes(), onset_displacement.bytes(), onset_stress.bytes(), rupture_displacement.bytes(),
-              max_displacement.bytes(), damage.bytes(), cell_interface_offset.bytes(),
-              cell_interfaces.bytes(), pair_a.bytes(), pair_b.bytes(), pair_interface.bytes(),
-              cell_pair_offset.bytes(), cell_pairs.bytes(), pair_spring.bytes(), pair_last_normal.bytes(),
-              pair_force_on_b.bytes(), pair_torque_on_a.bytes(), pair_torque_on_b.bytes(), pair_margin.bytes(),
-              pair_elastic.bytes(), pair_damping.bytes(), pair_friction.bytes(), pair_status.bytes(),
-              item_cell.bytes(), item_wall.bytes(), item_triangle_offset.bytes(), item_triangles.bytes(),
-              cell_wall_item_offset.bytes(), item_spring.bytes(), item_last_normal.bytes(), item_force.bytes(),
-              item_torque.bytes(), item_elastic.bytes(), item_damping.bytes(), item_friction.bytes(),
-              item_power.bytes(), item_status.bytes(), walls.bytes(), triangle_vertices.bytes(),
-              reactions.bytes(), bond_sums.bytes(), pair_sums.bytes(), item_sums.bytes(), cell_sums.bytes()})
+        for (std::size_t b : {position.bytes(),
+                              velocity.bytes(),
+                              angular_velocity.bytes(),
+                              force.bytes(),
+                              torque.bytes(),
+                              principal_inertia.bytes(),
+                              core_vertices.bytes(),
+                              orientation.bytes(),
+                              mass.bytes(),
+                              dilation_radius.bytes(),
+                              bounding_radius.bytes(),
+                              core_vertex_offset.bytes(),
+                              rotation.bytes(),
+                              angular_velocity_world.bytes(),
+                              position_at_build.bytes(),
+                              cell_i.bytes(),
+                              cell_j.bytes(),
+                              bond_offset.bytes(),
+                              intact_bonds.bytes(),
+                              normal_i.bytes(),
+                              normal_j.bytes(),
+                              force_on_i.bytes(),
+                              torque_on_i.bytes(),
+                              torque_on_j.bytes(),
+                              length_i.bytes(),
+                              length_j.bytes(),
+                              bond_area.bytes(),
+                              damping_beta.bytes(),
+                              anchor_i.bytes(),
+                              anchor_j.bytes(),
+                              stage.bytes(),
+                              onset_displacement.bytes(),
+                              onset_stress.bytes(),
+                              rupture_displacement.bytes(),
+                              max_displacement.bytes(),
+                              damage.bytes(),
+                              cell_interface_offset.bytes(),
+                              cell_interfaces.bytes(),
+                              pair_a.bytes(),
+                              pair_b.bytes(),
+                              pair_interface.bytes(),
+                              cell_pair_offset.bytes(),
+                              cell_pairs.bytes(),
+                              pair_spring.bytes(),
+                              pair_last_normal.bytes(),
+                              pair_force_on_b.bytes(),
+                              pair_torque_on_a.bytes(),
+                              pair_torque_on_b.bytes(),
+                              pair_margin.bytes(),
+                              pair_elastic.bytes(),
+                              pair_damping.bytes(),
+                              pair_friction.bytes(),
+                              pair_status.bytes(),
+                              item_cell.bytes(),
+                              item_wall.bytes(),
+                              item_triangle_offset.bytes(),
+                              item_triangles.bytes(),
+                              cell_wall_item_offset.bytes(),
+                              item_spring.bytes(),
+                              item_last_normal.bytes(),
+                              item_force.bytes(),
+                              item_torque.bytes(),
+                              item_elastic.bytes(),
+                              item_damping.bytes(),
+                              item_friction.bytes(),
+                              item_power.bytes(),
+                              item_status.bytes(),
+                              walls.bytes(),
+                              triangle_vertices.bytes(),
+                              reactions.bytes(),
+                              bond_sums.bytes(),
+                              pair_sums.bytes(),
+                              item_sums.bytes(),
+                              cell_sums.bytes()})
             total += b;
         return total;
     }
@@ -365,7 +430,8 @@ CudaBackendInfo cudaBackendInfo()
     int count = 0;
     const cudaError_t status = cudaGetDeviceCount(&count);
     if (status != cudaSuccess) {
-        info.status = std::string("no usable CUDA device (cudaGetDeviceCount: ") + cudaGetErrorString(status) + ")";
+        info.status =
+            std::string("no usable CUDA device (cudaGetDeviceCount: ") + cudaGetErrorString(status) + ")";
         cudaGetLastError();  // clear the sticky error state
         return info;
     }
@@ -440,8 +506,8 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
              arrayBytes(f.torque_on_j);
     const BondArrays& b = host.bonds_;
     total += arrayBytes(b.anchor_i) + arrayBytes(b.anchor_j) + arrayBytes(b.stage) +
-             arrayBytes(b.onset_displacement) + arrayBytes(b.onset_stress) + arrayBytes(b.rupture_displacement) +
-             arrayBytes(b.max_displacement) + arrayBytes(b.damage);
+             arrayBytes(b.onset_displacement) + arrayBytes(b.onset_stress) +
+             arrayBytes(b.rupture_displacement) + arrayBytes(b.max_displacement) + arrayBytes(b.damage);
     total += arrayBytes(host.cell_interface_offset_) + arrayBytes(host.cell_interfaces_);
     const ContactPairArrays& p = host.pairs_;
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
@@ -450,14 +516,16 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
              arrayBytes(p.elastic_energy) + arrayBytes(p.damping_power) + arrayBytes(p.friction_dissipation) +
              arrayBytes(p.status) + arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
-    total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) + arrayBytes(w.triangles) +
-             arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) + arrayBytes(w.force_on_cell) +
-             arrayBytes(w.torque_on_cell) + arrayBytes(w.elastic_energy) + arrayBytes(w.damping_power) +
-             arrayBytes(w.friction_dissipation) + arrayBytes(w.wall_power) + arrayBytes(w.status) +
-             arrayBytes(host.cell_wall_item_offset_) + arrayBytes(host.triangle_vertices_);
-    total += (f.cell_i.size() / threads_per_block + 1) * sizeof(BondSums) +
-             (p.cell_a.size() / threads_per_block + w.cell.size() / threads_per_block + 2) * sizeof(ContactSums) +
-             (n / threads_per_block + 1) * sizeof(CellSums);
+    total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
+             arrayBytes(w.triangles) + arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) +
+             arrayBytes(w.force_on_cell) + arrayBytes(w.torque_on_cell) + arrayBytes(w.elastic_energy) +
+             arrayBytes(w.damping_power) + arrayBytes(w.friction_dissipation) + arrayBytes(w.wall_power) +
+             arrayBytes(w.status) + arrayBytes(host.cell_wall_item_offset_) +
+             arrayBytes(host.triangle_vertices_);
+    total +=
+        (f.cell_i.size() / threads_per_block + 1) * sizeof(BondSums) +
+        (p.cell_a.size() / threads_per_block + w.cell.size() / threads_per_block + 2) * sizeof(ContactSums) +
+        (n / threads_per_block + 1) * sizeof(CellSums);
     return total;
 }
 
@@ -751,8 +819,8 @@ void CudaDemModel::computeForces(double dt)
     for (auto* counter : {&h.counters_.contacts_active, &h.counters_.wall_contacts_active}) {
         const bool pairs = counter == &h.counters_.contacts_active;
         int active = 0;
-        for (const ContactSums& s : downloadPartials(pairs ? d.pair_sums : d.item_sums,
-                                                     pairs ? pair_blocks : item_blocks)) {
+        for (const ContactSums& s :
+             downloadPartials(pairs ? d.pair_sums : d.item_sums, pairs ? pair_blocks : item_blocks)) {
             active += s.active;
             h.counters_.core_intersections += s.cores_intersect;
             h.energies_.contact_elastic += s.elastic_energy;
@@ -807,10 +875,10 @@ void CudaDemModel::computeForces(double dt)
 namespace {
 
 IntegrationArgs integrationArgs(const DemParameters& parameters, DeviceArray<double>& mass,
-                                DeviceArray<Vec3>& inertia, DeviceArray<Vec3>& force, DeviceArray<Vec3>& torque,
-                                DeviceArray<Mat3>& rotation, DeviceArray<Vec3>& position,
-                                DeviceArray<Vec3>& velocity, DeviceArray<Quat>& orientation,
-                                DeviceArray<Vec3>& angular_velocity)
+                                DeviceArray<Vec3>& inertia, DeviceArray<Vec3>& force,
+                                DeviceArray<Vec3>& torque, DeviceArray<Mat3>& rotation,
+                                DeviceArray<Vec3>& position, DeviceArray<Vec3>& velocity,
+                                DeviceArray<Quat>& orientation, DeviceArray<Vec3>& angular_velocity)
 {
     IntegrationArgs a;
     a.gravity = parameters.gravity;
@@ -862,13 +930,14 @@ double CudaDemModel::step(double dt)
     if (!h.forces_valid_) computeForces(0.0);
     h.last_dt_ = dt;
     const int n = h.cells_.size();
-    const IntegrationArgs a = integrationArgs(h.parameters_, d.mass, d.principal_inertia, d.force, d.torque,
-                                              d.rotation, d.position, d.velocity, d.orientation,
-                                              d.angular_velocity);
+    const IntegrationArgs a =
+        integrationArgs(h.parameters_, d.mass, d.principal_inertia, d.force, d.torque, d.rotation, d.position,
+                        d.velocity, d.orientation, d.angular_velocity);
     const int blocks = blocksFor(n);
     if (blocks > 0) kickDriftKernel<<<blocks, threads_per_block>>>(n, a, dt, d.cell_sums.data());
     check(cudaGetLastError(), "drift kernel");
-    for (const CellSums& s : downloadPartials(d.cell_sums, blocks)) h.energies_.gravity_work += s.gravity_work;
+    for (const CellSums& s : downloadPartials(d.cell_sums, blocks))
+        h.energies_.gravity_work += s.gravity_work;
     h.moveWalls(dt);
     computeForces(dt);
     if (blocks > 0) kickKernel<<<blocks, threads_per_block>>>(n, a, dt);

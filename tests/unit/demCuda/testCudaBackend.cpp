@@ -39,9 +39,9 @@ DemModel eventfulCluster(bool triangulated_floor = false)
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    DemModel model(
-        test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation, true, {0.0, 0.0, 0.2 * dilation}),
-        p);
+    DemModel model(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation, true,
+                                      {0.0, 0.0, 0.2 * dilation}),
+                   p);
     if (triangulated_floor) {
         const double half = 0.05;
         model.addTriSurface({{-half, -half, 0.0}, {half, -half, 0.0}, {half, half, 0.0}, {-half, half, 0.0}},
