@@ -147,6 +147,52 @@ TEST_CASE("the device run is reproducible, and download + upload continue it unc
     CHECK(std::memcmp(plain.data(), round_trip.data(), plain.size() * sizeof(Vec3)) == 0);
 }
 
+// The device versions of two CPU tests of testDynamics.cpp: the energy bookkeeping
+// (block sums downloaded each step) and the finiteness check (the status the run loop reads).
+TEST_CASE("on the device, a bonded cluster without damping or breakage conserves energy", "[gpu][dem]")
+{
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.bond_damping = 0.0;
+    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    DemModel host(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
+    shake(host, 0.05, 20.0, 7);
+    host.evaluateForces(0.0);
+    CudaDemModel gpu(host);
+    const double dt = 0.02 * host.rayleighTimeStep();
+    const double initial = host.energies().balance();
+    double largest_deviation = 0.0;
+    for (int i = 0; i < 10000; ++i) {
+        gpu.step(dt);
+        REQUIRE(host.status().ok());
+        largest_deviation = std::max(largest_deviation, std::fabs(host.energies().balance() - initial));
+    }
+    INFO("strain " << host.energies().bond_strain << " initial " << initial << " largest deviation "
+                   << largest_deviation);
+    CHECK(host.energies().bond_strain > 0.1 * initial);
+    CHECK(largest_deviation < 0.005 * initial);
+    CHECK(host.counters().bonds_broken == 0);
+}
+
+TEST_CASE("on the device, a time step far too large is reported, naming the step", "[gpu][dem]")
+{
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.bond_damping = 0.0;
+    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    DemModel host(test::boxBlockMesh(3, 3, 3, {cell_size, cell_size, cell_size}, dilation), p);
+    shake(host, 0.05, 0.0, 3);
+    CudaDemModel gpu(host);
+    const double dt = 2.0 * host.rayleighTimeStep();
+    long failed_at = -1;
+    for (int i = 0; i < 2000 && failed_at < 0; ++i) {
+        gpu.step(dt);
+        if (!host.status().ok()) failed_at = host.status().step;
+    }
+    REQUIRE(failed_at > 0);
+    CHECK_THAT(host.status().message(), Catch::Contains("step " + std::to_string(failed_at)));
+}
+
 int main(int argc, char** argv)
 {
     const CudaBackendInfo info = cudaBackendInfo();
