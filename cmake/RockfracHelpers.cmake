@@ -11,14 +11,16 @@ function(rockfrac_target_options target)
 endfunction()
 
 # Apply sanitizer flags globally (before targets are made).
+# Host code only: nvcc (the CUDA backend, libs/demCuda) takes neither flag.
 if(ROCKFRAC_SANITIZE)
-  add_compile_options(-fsanitize=${ROCKFRAC_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_compile_options(
+    "$<$<COMPILE_LANGUAGE:C,CXX>:-fsanitize=${ROCKFRAC_SANITIZE};-fno-omit-frame-pointer;-fno-sanitize-recover=all>")
   add_link_options(-fsanitize=${ROCKFRAC_SANITIZE})
   # GCC 12's -Wmaybe-uninitialized misfires on libstdc++ (std::regex, std::function)
   # under -fsanitize=address at -O2, which stops the warnings-as-errors sanitize preset
   # in system headers; the release and ci builds keep the warning.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    add_compile_options(-Wno-maybe-uninitialized)
+    add_compile_options($<$<COMPILE_LANGUAGE:C,CXX>:-Wno-maybe-uninitialized>)
   endif()
 endif()
 # Test environment for sanitized builds: third-party leaks are suppressed (not ours).

@@ -1,23 +1,30 @@
 // benchDem: speed and memory of the bonded Voronoi DEM (docs/benchmarks.md).
 //
-//   benchDem                    intact bonded blocks of 1e4 and 1e5 cells, 1 and 2 threads
-//   benchDem -case <dir> [N]    a bondedDemFoam case from its latest time directory (e.g. an
-//                               SPB rock after fracture), N steps
+//   benchDem                        intact bonded blocks of 1e4 and 1e5 cells, 1 and 2 threads
+//   benchDem -block <cells> [N]     one intact block, N steps, 1 and 2 threads
+//   benchDem -block <cells> [N] -cuda   the same block on the CUDA backend (needs a GPU)
+//   benchDem -block <cells> [N] -dt <s> with the given step instead of 0.5 x the critical step
+//                                   (whose serial power iteration takes many minutes at 1e6 cells)
+//   benchDem -case <dir> [N]        a bondedDemFoam case from its latest time directory (e.g. an
+//                                   SPB rock after fracture), N steps
 //
-// Prints cell-steps per second (wall clock, best of 3 repetitions), bonds per cell and the
-// model's memory per cell. Not a test: speed is measured here, never asserted.
+// Prints cell-steps per second (wall clock, best of 3 repetitions), bonds per cell, the
+// model's memory per cell (device memory with -cuda) and the time step (bench/run gives the
+// same step to the Yade peer). Not a test: speed is measured here, never asserted.
 #include <omp.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/dictionary.hpp"
 #include "core/random.hpp"
 #include "core/timeControl.hpp"
 #include "dem/demModel.hpp"
 #include "demCase/demCase.hpp"
+#include "demCuda/cudaDemModel.hpp"
 #include "voronoi/domain.hpp"
 #include "voronoi/tessellation.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
@@ -33,21 +40,32 @@ double secondsFor(DemModel& model, int steps, double dt)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void report(const char* what, int nCells, int nBonds, std::size_t bytes, int threads, int steps,
-            double seconds)
+double secondsFor(CudaDemModel& device, int steps, double dt)
 {
-    std::printf("%-28s %8d %6.1f %3d %7d %10.3f %12.4g %8.0f\n", what, nCells, 2.0 * nBonds / nCells, threads,
-                steps, seconds, static_cast<double>(nCells) * steps / seconds,
-                static_cast<double>(bytes) / nCells);
+    const auto start = std::chrono::steady_clock::now();
+    for (int s = 0; s < steps; ++s) device.step(dt);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// threads < 0: the CUDA backend. b/cell: bond ends per cell (2 x bonds / cells).
+void report(const char* what, int nCells, int nBonds, std::size_t bytes, int threads, int steps,
+            double seconds, double dt)
+{
+    char thr[8];
+    std::snprintf(thr, sizeof(thr), "%s", threads < 0 ? "gpu" : std::to_string(threads).c_str());
+    std::printf("%-28s %8d %6.1f %3s %7d %10.3f %12.4g %8.0f %10.4g\n", what, nCells, 2.0 * nBonds / nCells,
+                thr, steps, seconds, static_cast<double>(nCells) * steps / seconds,
+                static_cast<double>(bytes) / nCells, dt);
+    std::fflush(stdout);
 }
 
 void header()
 {
-    std::printf("%-28s %8s %6s %3s %7s %10s %12s %8s\n", "case", "cells", "b/cell", "thr", "steps",
-                "wall [s]", "cell-steps/s", "B/cell");
+    std::printf("%-28s %8s %6s %3s %7s %10s %12s %8s %10s\n", "case", "cells", "b/cell", "thr", "steps",
+                "wall [s]", "cell-steps/s", "B/cell", "dt [s]");
 }
 
-void intactBlock(int nCells, int steps)
+void intactBlock(int nCells, int steps, bool cuda, double given_dt)
 {
     // A block with the BDT's cell size (meso constant 7.25e-8 m^3), pd 0.6 of the spacing.
     const double volume = nCells * 7.25e-8;
@@ -61,19 +79,36 @@ void intactBlock(int nCells, int steps)
     p.gravity = {0, 0, 0};
     p.damping_reading = DampingReading::criticalFraction;
     p.bond_damping = 0.05;
+    const std::string name = "intact block " + std::to_string(nCells);
+    // One model for every thread count (set-up, the critical step's power iteration and the
+    // first neighbour lists cost more than the timed steps at 1e5 cells and beyond).
+    DemModel model(mesh, p);
+    SplitMix64 random(3);
+    for (int c = 0; c < model.cells().size(); ++c)
+        model.setCellVelocity(c, {random.uniform(-1e-3, 1e-3), random.uniform(-1e-3, 1e-3), 0}, {});
+    const double dt = given_dt > 0.0 ? given_dt : 0.5 * model.criticalTimeStep().value;
+    if (cuda) {
+        CudaDemModel device(model);
+        secondsFor(device, 5, dt);  // warm up: lists, caches
+        double best = 1e300;
+        for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(device, steps, dt));
+        report(name.c_str(), model.cells().size(), model.bonds().size(), device.deviceBytes(), -1, steps,
+               best, dt);
+        return;
+    }
     for (int threads : {1, 2}) {
         omp_set_num_threads(threads);
-        DemModel model(mesh, p);
-        SplitMix64 random(3);
-        for (int c = 0; c < model.cells().size(); ++c)
-            model.setCellVelocity(c, {random.uniform(-1e-3, 1e-3), random.uniform(-1e-3, 1e-3), 0}, {});
-        const double dt = 0.5 * model.criticalTimeStep().value;
-        secondsFor(model, 5, dt);  // warm up: lists, caches
+        secondsFor(model, 5, dt);  // warm up: lists, caches, threads
         double best = 1e300;
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
-        report(("intact block " + std::to_string(nCells)).c_str(), model.cells().size(), model.bonds().size(),
-               model.memoryBytes(), threads, steps, best);
+        report(name.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps,
+               best, dt);
     }
+    // What the CUDA backend would hold on the device for this model (from the array sizes).
+    const std::size_t device_bytes = CudaDemModel::estimateDeviceBytes(model);
+    if (device_bytes > 0)
+        std::printf("# estimated CUDA device memory: %.0f bytes/cell\n",
+                    static_cast<double>(device_bytes) / model.cells().size());
 }
 
 void fromCase(const std::string& caseDir, int steps)
@@ -102,7 +137,7 @@ void fromCase(const std::string& caseDir, int steps)
         std::string label =
             "case t=" + std::string(name) + " (" + std::to_string(model.counters().bonds_broken) + " broken)";
         report(label.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps,
-               best);
+               best, dt);
     }
 }
 
@@ -115,7 +150,27 @@ int main(int argc, char** argv)
         fromCase(argv[2], argc >= 4 ? std::atoi(argv[3]) : 2000);
         return 0;
     }
-    intactBlock(10000, 100);
-    intactBlock(100000, 10);
+    if (argc >= 3 && std::strcmp(argv[1], "-block") == 0) {
+        bool cuda = false;
+        int steps = 10;
+        double dt = 0.0;
+        for (int a = 3; a < argc; ++a) {
+            if (std::strcmp(argv[a], "-cuda") == 0)
+                cuda = true;
+            else if (std::strcmp(argv[a], "-dt") == 0 && a + 1 < argc)
+                dt = std::atof(argv[++a]);
+            else
+                steps = std::atoi(argv[a]);
+        }
+        try {
+            intactBlock(std::atoi(argv[2]), steps, cuda, dt);
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "benchDem: %s\n", error.what());
+            return 1;
+        }
+        return 0;
+    }
+    intactBlock(10000, 100, false, 0.0);
+    intactBlock(100000, 10, false, 0.0);
     return 0;
 }

@@ -17,7 +17,7 @@ namespace rockfrac {
 struct Vec3 {
     double x = 0.0, y = 0.0, z = 0.0;
 
-    RF_HD constexpr Vec3() = default;
+    constexpr Vec3() = default;  // defaulted: host and device alike
     RF_HD constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
 
     RF_HD double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }

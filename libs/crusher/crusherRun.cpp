@@ -112,6 +112,11 @@ struct CrusherRun::Impl {
           controlDict(Dictionary::readFile(a.path("system/controlDict"))),
           time(controlDict, a.casePath())
     {
+        // The CUDA backend does not insert or remove cells (docs/benchmarks.md).
+        if (controlDict.found("backend") && controlDict.getWord("backend", {"cpu", "cuda"}) == "cuda")
+            throw UserError(controlDict.location("backend").str() +
+                            ": backend cuda is not available for a crusher run (cells are inserted and "
+                            "removed, which the CUDA backend does not do); set 'backend cpu;'");
         parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
         loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
         parameters.gravity = loading.gravity;

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dem/cellCore.hpp"
+#include "dem/cellKernels.hpp"
 
 namespace rockfrac {
 
@@ -796,7 +797,14 @@ bool DemModel::neighbourListsStale() const
     double cell_move2 = 0.0;
     for (int c = 0; c < cells_.size(); ++c)
         cell_move2 = std::max(cell_move2, norm2(cells_.position[c] - position_at_build_[c]));
-    const double cell_move = std::sqrt(cell_move2);
+    return neighbourListsStale(std::sqrt(cell_move2));
+}
+
+// Stale when a cell has moved half the skin since the build, or a cell and a wall
+// together a whole skin (cell_move: the largest cell displacement since the build).
+bool DemModel::neighbourListsStale(double cell_move) const
+{
+    if (!lists_valid_ || wall_origin_at_build_.size() != walls_.size()) return true;
     double wall_move = 0.0;
     for (int w = 0; w < nWalls(); ++w) {
         double extent = 0.0;
@@ -916,10 +924,9 @@ void DemModel::refreshKinematicCaches()
 {
     const int n = cells_.size();
 #pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
-    for (int c = 0; c < n; ++c) {
-        rotation_[c] = rotationMatrix(cells_.orientation[c]);
-        angular_velocity_world_[c] = rotation_[c] * cells_.angular_velocity[c];
-    }
+    for (int c = 0; c < n; ++c)
+        refreshCellKinematics(cells_.orientation.data(), cells_.angular_velocity.data(), rotation_.data(),
+                              angular_velocity_world_.data(), c);
     wall_poses_.clear();
     for (const WallState& w : walls_) wall_poses_.push_back(wallPose(w));
 }
@@ -1083,42 +1090,36 @@ void DemModel::runContactKernels(double dt)
     }
 }
 
-// Each cell sums the items it takes part in, in a fixed order: no atomics, and
-// the same floating-point sums whatever the number of threads.
+GatherArgs DemModel::gatherArgs()
+{
+    GatherArgs a;
+    a.gravity = parameters_.gravity;
+    a.mass = cells_.mass.data();
+    a.interface_offset = cell_interface_offset_.data();
+    a.interface_entries = cell_interfaces_.data();
+    a.interface_force_on_i = interfaces_.force_on_i.data();
+    a.interface_torque_on_i = interfaces_.torque_on_i.data();
+    a.interface_torque_on_j = interfaces_.torque_on_j.data();
+    a.pair_offset = cell_pair_offset_.data();
+    a.pair_entries = cell_pairs_.data();
+    a.pair_force_on_b = pairs_.force_on_b.data();
+    a.pair_torque_on_a = pairs_.torque_on_a.data();
+    a.pair_torque_on_b = pairs_.torque_on_b.data();
+    a.wall_item_offset = cell_wall_item_offset_.data();
+    a.wall_force_on_cell = wall_items_.force_on_cell.data();
+    a.wall_torque_on_cell = wall_items_.torque_on_cell.data();
+    a.force = cells_.force.data();
+    a.torque = cells_.torque.data();
+    return a;
+}
+
+// Each cell sums the items it takes part in, in a fixed order (cellKernels.hpp).
 void DemModel::gatherForces()
 {
     const int n = cells_.size();
-    const Vec3 gravity = parameters_.gravity;
+    const GatherArgs a = gatherArgs();
 #pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
-    for (int c = 0; c < n; ++c) {
-        Vec3 force = cells_.mass[c] * gravity, torque;
-        for (int e = cell_interface_offset_[c]; e < cell_interface_offset_[c + 1]; ++e) {
-            const int k = cell_interfaces_[e] >> 1;
-            if (cell_interfaces_[e] & 1) {
-                force -= interfaces_.force_on_i[k];
-                torque += interfaces_.torque_on_j[k];
-            } else {
-                force += interfaces_.force_on_i[k];
-                torque += interfaces_.torque_on_i[k];
-            }
-        }
-        for (int e = cell_pair_offset_[c]; e < cell_pair_offset_[c + 1]; ++e) {
-            const int p = cell_pairs_[e] >> 1;
-            if (cell_pairs_[e] & 1) {
-                force += pairs_.force_on_b[p];
-                torque += pairs_.torque_on_b[p];
-            } else {
-                force -= pairs_.force_on_b[p];
-                torque += pairs_.torque_on_a[p];
-            }
-        }
-        for (int i = cell_wall_item_offset_[c]; i < cell_wall_item_offset_[c + 1]; ++i) {
-            force += wall_items_.force_on_cell[i];
-            torque += wall_items_.torque_on_cell[i];
-        }
-        cells_.force[c] = force;
-        cells_.torque[c] = torque;
-    }
+    for (int c = 0; c < n; ++c) gatherCellForces(a, c);
 }
 
 void DemModel::computeForces(double dt)
@@ -1141,51 +1142,46 @@ void DemModel::evaluateForces(double dt)
 
 // ---- Integration ----------------------------------------------------------------
 
-// First half kick and drift (velocity Verlet) and the rotation update: forward
-// Euler on SO(3) with the exact rotation of the body-frame angular momentum by
-// the same increment (the gyroscopic term), which keeps |L| and, without torque,
-// the world angular momentum exactly (docs/theory-dem.md §Integration).
+IntegrationArgs DemModel::integrationArgs()
+{
+    IntegrationArgs a;
+    a.gravity = parameters_.gravity;
+    a.mass = cells_.mass.data();
+    a.principal_inertia = cells_.principal_inertia.data();
+    a.force = cells_.force.data();
+    a.torque = cells_.torque.data();
+    a.rotation = rotation_.data();
+    a.position = cells_.position.data();
+    a.velocity = cells_.velocity.data();
+    a.orientation = cells_.orientation.data();
+    a.angular_velocity = cells_.angular_velocity.data();
+    return a;
+}
+
+// First half kick, drift and rotation update (kickDriftCell), gravity's work summed per block.
 void DemModel::kickDrift(double dt)
 {
     const int n = cells_.size();
     const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
     cell_block_sums_.assign(n_blocks, CellBlockSums{});
-    const Vec3 gravity = parameters_.gravity;
+    const IntegrationArgs a = integrationArgs();
 #pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         double gravity_work = 0.0;
-        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
-            const double mass = cells_.mass[c];
-            cells_.velocity[c] += (0.5 * dt / mass) * cells_.force[c];
-            const Vec3 step = dt * cells_.velocity[c];
-            cells_.position[c] += step;
-            gravity_work += mass * dot(gravity, step);
-
-            const Vec3 inertia = cells_.principal_inertia[c];
-            const Vec3 omega = cells_.angular_velocity[c];
-            const Quat increment = quatFromRotationVector(dt * omega);
-            cells_.orientation[c] = normalised(cells_.orientation[c] * increment);
-            const Vec3 momentum{inertia.x * omega.x, inertia.y * omega.y, inertia.z * omega.z};
-            const Vec3 turned = transposeTimes(rotationMatrix(increment), momentum);
-            cells_.angular_velocity[c] = {turned.x / inertia.x, turned.y / inertia.y, turned.z / inertia.z};
-        }
+        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c)
+            gravity_work += kickDriftCell(a, c, dt);
         cell_block_sums_[block].gravity_work = gravity_work;
     }
     for (const CellBlockSums& s : cell_block_sums_) energies_.gravity_work += s.gravity_work;
 }
 
-// Second half kick, and the torque's forward Euler increment of the angular velocity.
+// Second half kick (kickCell).
 void DemModel::kick(double dt)
 {
     const int n = cells_.size();
+    const IntegrationArgs a = integrationArgs();
 #pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
-    for (int c = 0; c < n; ++c) {
-        cells_.velocity[c] += (0.5 * dt / cells_.mass[c]) * cells_.force[c];
-        const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
-        const Vec3 inertia = cells_.principal_inertia[c];
-        cells_.angular_velocity[c] +=
-            dt * Vec3{torque_body.x / inertia.x, torque_body.y / inertia.y, torque_body.z / inertia.z};
-    }
+    for (int c = 0; c < n; ++c) kickCell(a, c, dt);
 }
 
 // Kinetic energy and the finiteness check, summed per block in a fixed order.
@@ -1194,22 +1190,15 @@ void DemModel::measureCells(double sync_dt)
     const int n = cells_.size();
     const int n_blocks = (n + cell_block_size - 1) / cell_block_size;
     cell_block_sums_.assign(n_blocks, CellBlockSums{});
+    const IntegrationArgs a = integrationArgs();
 #pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         CellBlockSums s;
         for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
-            // Angular velocities live at half steps (forward Euler in the torque after the
-            // orientation update = leapfrog staggering); the energy uses the synchronised value.
-            const Vec3 inertia = cells_.principal_inertia[c];
-            const Vec3 torque_body = transposeTimes(rotation_[c], cells_.torque[c]);
-            const Vec3 w = cells_.angular_velocity[c] - (0.5 * sync_dt) * Vec3{torque_body.x / inertia.x,
-                                                                               torque_body.y / inertia.y,
-                                                                               torque_body.z / inertia.z};
-            s.kinetic_translation += 0.5 * cells_.mass[c] * norm2(cells_.velocity[c]);
-            s.kinetic_rotation +=
-                0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
-            const double check = norm2(cells_.position[c]) + norm2(cells_.velocity[c]) + norm2(w);
-            if (!std::isfinite(check) && s.non_finite_cell < 0) s.non_finite_cell = c;
+            const CellEnergyTerms t = measureCell(a, c, sync_dt);
+            s.kinetic_translation += t.kinetic_translation;
+            s.kinetic_rotation += t.kinetic_rotation;
+            if (!t.finite && s.non_finite_cell < 0) s.non_finite_cell = c;
         }
         cell_block_sums_[block] = s;
     }
@@ -1220,13 +1209,21 @@ void DemModel::measureCells(double sync_dt)
         energies_.kinetic_rotation += s.kinetic_rotation;
         if (non_finite < 0) non_finite = s.non_finite_cell;
     }
+    finishMeasurement(energies_.kinetic_translation, energies_.kinetic_rotation, non_finite);
+}
+
+// The kinetic energies are known: rebase the balance if asked, then check the state.
+void DemModel::finishMeasurement(double kinetic_translation, double kinetic_rotation, int non_finite_cell)
+{
+    energies_.kinetic_translation = kinetic_translation;
+    energies_.kinetic_rotation = kinetic_rotation;
     // A state set by the caller is an energy input: the balance is measured from here.
     if (rebase_energy_) {
         initial_balance_ = energies_.balance();
         energy_scale_ = 0.0;
         rebase_energy_ = false;
     }
-    updateStatus(non_finite);
+    updateStatus(non_finite_cell);
 }
 
 void DemModel::updateStatus(int non_finite_cell)

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dem/bondLaw.hpp"
+#include "dem/cellKernels.hpp"
 #include "dem/contactLaw.hpp"
 #include "dem/demParameters.hpp"
 #include "dem/demState.hpp"
@@ -74,6 +75,8 @@ struct WallMotion {
     Vec3 velocity;
     Vec3 angular_velocity;
 };
+
+class CudaDemModel;  // libs/demCuda: steps this model's state on a GPU
 
 class DemModel {
 public:
@@ -177,6 +180,10 @@ public:
     std::size_t memoryBytes() const;
 
 private:
+    // The CUDA backend mirrors step() with device kernels and uses this model for
+    // what stays on the host (walls, neighbour-list rebuilds, energy bookkeeping).
+    friend class CudaDemModel;
+
     void setUpLaws();
     // Append the cells of mesh (placed by pose unless identity) and their bonds; the
     // body frames relative to the mesh frame are returned for the bonds' anchors.
@@ -186,10 +193,12 @@ private:
     void shrinkToFit();
     void refreshKinematicCaches();
     bool neighbourListsStale() const;
+    bool neighbourListsStale(double cell_move) const;
     void rebuildNeighbourLists();
     void buildWallItems();
     void computeForces(double dt);
     void measureCells(double sync_dt);
+    void finishMeasurement(double kinetic_translation, double kinetic_rotation, int non_finite_cell);
     void updateStatus(int non_finite_cell);
     void runBondKernel(double dt);
     void runContactKernels(double dt);
@@ -198,6 +207,8 @@ private:
     void kick(double dt);
     void moveWalls(double dt);
     BondKernelArgs bondArgs();
+    GatherArgs gatherArgs();
+    IntegrationArgs integrationArgs();
     CellContactView cellView() const;
     WallPose wallPose(const WallState& wall) const;
 

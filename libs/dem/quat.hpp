@@ -14,7 +14,7 @@ namespace rockfrac {
 struct Quat {
     double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
 
-    RF_HD constexpr Quat() = default;
+    constexpr Quat() = default;  // defaulted: host and device alike
     RF_HD constexpr Quat(double w_, double x_, double y_, double z_) : w(w_), x(x_), y(y_), z(z_) {}
 };
 

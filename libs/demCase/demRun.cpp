@@ -12,6 +12,7 @@
 #include "core/timeControl.hpp"
 #include "demCase/demCase.hpp"
 #include "effects/modelEffect.hpp"
+#include "demCuda/cudaDemModel.hpp"
 #include "io/timeSeries.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
 
@@ -45,6 +46,19 @@ void checkDemMemory(const fs::path& caseDir)
                     "use fewer cells (nCells of system/voronoiMeshDict) or a machine with more memory");
 }
 
+// controlDict `backend cpu|cuda;` (default cpu). Asking for cuda where this build or
+// machine has none is one error naming the entry (demCuda/cudaDemModel.hpp).
+bool readCudaBackend(const Dictionary& controlDict)
+{
+    if (!controlDict.found("backend")) return false;
+    if (controlDict.getWord("backend", {"cpu", "cuda"}) == "cpu") return false;
+    const CudaBackendInfo info = cudaBackendInfo();
+    if (!info.compiled || info.devices == 0)
+        throw UserError(controlDict.location("backend").str() + ": backend cuda is not available: " +
+                        info.status + "; set 'backend cpu;' in " + controlDict.fileName());
+    return true;
+}
+
 }  // namespace
 
 struct BondedDemRun::Impl {
@@ -56,6 +70,8 @@ struct BondedDemRun::Impl {
     ModelEffects effects;  // constant/modelEffects (optional): off = the baseline model
     VoronoiMesh mesh;
     std::unique_ptr<DemModel> model;
+    bool useCuda = false;
+    std::unique_ptr<CudaDemModel> device;  // made by execute() when useCuda
     CellShapes shapes;
     int lowerPlate = -1, upperPlate = -1;
     long sampleInterval = 10;  // steps between plateForce rows
@@ -73,6 +89,7 @@ struct BondedDemRun::Impl {
           controlDict(Dictionary::readFile(a.path("system/controlDict"))),
           time(controlDict, a.casePath())
     {
+        useCuda = readCudaBackend(controlDict);
         parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
         loading = readLoading(Dictionary::readFile(a.path("constant/loading")));
         parameters.gravity = loading.gravity;
@@ -168,6 +185,22 @@ struct BondedDemRun::Impl {
         model->setWallVelocity(upperPlate, loadingStarted ? loading.upper.velocity : Vec3{});
     }
 
+    // One step on the chosen backend; the model's time, energies, counters, status
+    // and plate reactions are current afterwards on either.
+    void advance()
+    {
+        if (device)
+            device->step(time.deltaT());
+        else
+            model->step(time.deltaT());
+    }
+
+    // The device state into the model before anything reads its cell arrays.
+    void synchroniseForOutput()
+    {
+        if (device) device->downloadState();
+    }
+
     double plateForce() const { return model->wallReaction(upperPlate).z; }
     double lowerPlateForce() const { return -model->wallReaction(lowerPlate).z; }
     // How far the plates have approached each other.
@@ -206,6 +239,7 @@ struct BondedDemRun::Impl {
 
     void writeTime()
     {
+        synchroniseForOutput();
         const double t = model->time();
         const fs::path staging = time.prepareStagingDir(t);
         writeDemState(staging / "demState", *model, step, peakForce, loadingStarted);
@@ -267,6 +301,10 @@ void BondedDemRun::printSetup() const
         r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
         r.loading.settlingTime, 1e-6 * static_cast<double>(r.model->memoryBytes()));
     for (const std::string& line : r.effects.descriptions()) std::printf("Model effect: %s\n", line.c_str());
+    if (r.useCuda)
+        std::printf("Backend: %s, %s\n", cudaBackendSummary().c_str(), cudaBackendInfo().status.c_str());
+    else
+        std::printf("Backend: cpu (OpenMP)\n");
     if (r.restarted) std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.step);
 }
 
@@ -278,11 +316,20 @@ int BondedDemRun::execute()
         return exitSuccess;
     }
     installInterruptHandlers();
+    if (r.useCuda) {
+        r.device = std::make_unique<CudaDemModel>(*r.model);
+        std::printf("CUDA backend: %.3g MB of device memory (%.0f bytes per cell)\n",
+                    1e-6 * static_cast<double>(r.device->deviceBytes()),
+                    static_cast<double>(r.device->deviceBytes()) / r.model->cells().size());
+    }
     TimeSeriesWriter plateForce(r.app.casePath(), "plateForce", Impl::columns(),
                                 r.restarted ? r.model->time() : -1.0);
     if (!r.restarted) {
         r.applyStage();
-        r.model->evaluateForces(r.time.deltaT());
+        if (r.device)
+            r.device->evaluateForces(r.time.deltaT());
+        else
+            r.model->evaluateForces(r.time.deltaT());
         plateForce.append(r.sampleRow());
         r.writeTime();
     }
@@ -292,10 +339,11 @@ int BondedDemRun::execute()
     int exitCode = exitSuccess;
     while (r.step < endStep) {
         r.applyStage();
-        r.model->step(r.time.deltaT());
+        r.advance();
         ++r.step;
         const DemStatus& status = r.model->status();
         if (!status.ok()) {
+            r.synchroniseForOutput();
             writeDemVtk(r.app.casePath(), static_cast<int>(r.step), *r.model, r.shapes, true);
             const auto times = TimeControl::timeDirectories(r.app.casePath());
             throw UserError("step " + std::to_string(r.step) + " (t = " + std::to_string(r.model->time()) +

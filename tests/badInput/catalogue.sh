@@ -134,6 +134,14 @@ SETUP
 badCase endBeforeStart demRun "controlDict" "raise endTime" bondedDemFoam -case . <<'SETUP'
 caseDict -case . system/controlDict -entry endTime -set 1e-6
 SETUP
+# backend cuda where there is none: a build without CUDA, or no visible device
+# (CUDA_VISIBLE_DEVICES=-1 hides any GPU, so the case fails the same way everywhere).
+badCase cudaBackendUnavailable dem "controlDict" "backend cuda is not available" env CUDA_VISIBLE_DEVICES=-1 bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry backend -add cuda
+SETUP
+badCase unknownBackend dem "controlDict" "cpu, cuda" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry backend -add opencl
+SETUP
 badCase demMemoryLimit dem "meshInfo" "estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 bondedDemFoam -case . <<'SETUP'
 SETUP
 badCase memoryLimitNotANumber dem "ROCKFRAC_MEMORY_LIMIT_BYTES" "not a number" env ROCKFRAC_MEMORY_LIMIT_BYTES=8GB bondedDemFoam -case . <<'SETUP'

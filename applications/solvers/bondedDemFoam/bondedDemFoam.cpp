@@ -19,6 +19,7 @@
 #include "crusher/crusherRun.hpp"
 #include "crusher/machineLoading.hpp"
 #include "demCase/demRun.hpp"
+#include "demCuda/cudaDemModel.hpp"
 
 using namespace rockfrac;
 
@@ -29,7 +30,9 @@ const AppInfo info{
     "after breakage, rigid plates with prescribed velocity. Writes the plate force, broken bonds and\n"
     "the energy balance to postProcessing/plateForce, the whole state at write times (restart with\n"
     "startFrom latestTime) and cells/bonds for ParaView. SIGINT/SIGTERM write the state and exit\n"
-    "with 130/143.",
+    "with 130/143.\n"
+    "Backends (controlDict 'backend cpu|cuda;', default cpu): cpu (OpenMP); " +
+        cudaBackendSummary() + ".",
     "[options]",
     {"bondedDemFoam -case tutorials/BDT/granite", "bondedDemFoam -case tutorials/BDT/granite -dry-run",
      "bondedDemFoam -case tutorials/CH660/tiny"},
