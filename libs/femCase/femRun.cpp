@@ -513,12 +513,14 @@ struct FeFractureRun::Impl {
         out.append({run.peakTime, load(1), fractions[1], run.peakGap, run.peakElongation,
                     run.kineticRatioAtPeak, load(0), load(2)});
         if (loading.kind == FemLoading::Kind::arcLoad) {
-            std::printf("Failure load %.6g N (arc load: kinetic energy above %.0f %% of the external work) at "
-                        "t = %.6g s\n",
-                        load(1), 100 * quasiStaticLimit, run.peakTime);
+            std::printf(
+                "Failure load %.6g N (arc load: kinetic energy above %.0f %% of the external work) at "
+                "t = %.6g s\n",
+                load(1), 100 * quasiStaticLimit, run.peakTime);
         } else {
             std::printf(
-                "Failure load %.6g N (first drop of more than %.0f %% below the running maximum) at t = %.6g s, "
+                "Failure load %.6g N (first drop of more than %.0f %% below the running maximum) at t = %.6g "
+                "s, "
                 "gap change %.4g mm, extensometer %.4g um; sensitivity: %.6g N (10 %%), %.6g N (30 %%, 0 = "
                 "no such drop)\n",
                 load(1), 100 * fractions[1], run.peakTime, 1e3 * run.peakGap, 1e6 * run.peakElongation,

@@ -49,56 +49,57 @@ std::vector<double> benchmarkSizes()
 TEST_CASE("KST-DFH element-steps per second under plate compression", "[.bench]")
 {
     for (const double targetTets : benchmarkSizes())
-    for (const bool weak : {false, true}) {
-        const double size = 0.02;
-        // gmsh's Delaunay tets at CharacteristicLengthMax h fill the box with about
-        // 5.9 (size / h)^3 tets (measured); the count printed is the real one.
-        const double h = size * std::cbrt(5.9 / targetTets);
-        TetMesh mesh;
-        {
-            test::GmshSession gmshSession;
-            mesh = test::boxMesh(gmshSession, size, size, size, h);
+        for (const bool weak : {false, true}) {
+            const double size = 0.02;
+            // gmsh's Delaunay tets at CharacteristicLengthMax h fill the box with about
+            // 5.9 (size / h)^3 tets (measured); the count printed is the real one.
+            const double h = size * std::cbrt(5.9 / targetTets);
+            TetMesh mesh;
+            {
+                test::GmshSession gmshSession;
+                mesh = test::boxMesh(gmshSession, size, size, size, h);
+            }
+            const double before = heapBytesInUse();
+            FemParameters parameters;
+            // The BDT granite tutorial's rock (m = 7, sigma_w = 21 MPa, V_ref = 2e-8 m^3), or
+            // a weak one (sigma_w = 1 MPa, V_ref = 1e-9 m^3) whose elements crack in the
+            // compression wave.
+            parameters.material.referenceVolume = weak ? 1e-9 : 2e-8;
+            if (weak) parameters.material.weibullStress = 1e6;
+            parameters.massDamping = 2e4;
+            FemModel model(mesh, parameters);
+            RigidPlate bottom, top;
+            top.point = {0, 0, size};
+            top.normal = {0, 0, -1};
+            model.addPlate(bottom);
+            const double dtEstimate = model.stableTimeStep();
+            // About 3e7 element-steps per measurement (a few seconds each).
+            const int steps = std::max(10, int(3e7 / double(mesh.numTets())));
+            // The plate compresses the box by 0.1 % over the whole benchmark, whatever the
+            // mesh: too little to invert any element. The granite rock stays intact (every
+            // element still runs the whole KST-DFH update: crack check, KST return); the weak
+            // rock cracks most elements, the costly branch (stress in the crack frame).
+            top.velocity = {0, 0, -0.001 * size / ((2 * steps + 1) * dtEstimate)};
+            model.addPlate(top);
+            const double dt = model.stableTimeStep();
+            REQUIRE(model.step(dt).ok);
+            const double bytesPerElement = (heapBytesInUse() - before) / double(mesh.numTets());
+            for (int threads : {1, 2}) {
+                omp_set_num_threads(threads);
+                const auto start = std::chrono::steady_clock::now();
+                for (int i = 0; i < steps; ++i) REQUIRE(model.step(dt).ok);
+                const double seconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                int cracked = 0;
+                for (double d : model.elementOutput().damage[0]) cracked += d > 0.5;
+                std::printf(
+                    "bench: %s rock, %zu tets, %zu nodes, %d threads, %d steps in %.2f s: %.3g "
+                    "element-steps/s "
+                    "(%.1f %% cracked), %.0f bytes/element\n",
+                    weak ? "weak" : "granite", mesh.numTets(), mesh.numNodes(), threads, steps, seconds,
+                    double(mesh.numTets()) * steps / seconds, 100.0 * cracked / double(mesh.numTets()),
+                    bytesPerElement);
+                std::fflush(stdout);
+            }
         }
-        const double before = heapBytesInUse();
-        FemParameters parameters;
-        // The BDT granite tutorial's rock (m = 7, sigma_w = 21 MPa, V_ref = 2e-8 m^3), or
-        // a weak one (sigma_w = 1 MPa, V_ref = 1e-9 m^3) whose elements crack in the
-        // compression wave.
-        parameters.material.referenceVolume = weak ? 1e-9 : 2e-8;
-        if (weak) parameters.material.weibullStress = 1e6;
-        parameters.massDamping = 2e4;
-        FemModel model(mesh, parameters);
-        RigidPlate bottom, top;
-        top.point = {0, 0, size};
-        top.normal = {0, 0, -1};
-        model.addPlate(bottom);
-        const double dtEstimate = model.stableTimeStep();
-        // About 3e7 element-steps per measurement (a few seconds each).
-        const int steps = std::max(10, int(3e7 / double(mesh.numTets())));
-        // The plate compresses the box by 0.1 % over the whole benchmark, whatever the
-        // mesh: too little to invert any element. The granite rock stays intact (every
-        // element still runs the whole KST-DFH update: crack check, KST return); the weak
-        // rock cracks most elements, the costly branch (stress in the crack frame).
-        top.velocity = {0, 0, -0.001 * size / ((2 * steps + 1) * dtEstimate)};
-        model.addPlate(top);
-        const double dt = model.stableTimeStep();
-        REQUIRE(model.step(dt).ok);
-        const double bytesPerElement = (heapBytesInUse() - before) / double(mesh.numTets());
-        for (int threads : {1, 2}) {
-            omp_set_num_threads(threads);
-            const auto start = std::chrono::steady_clock::now();
-            for (int i = 0; i < steps; ++i) REQUIRE(model.step(dt).ok);
-            const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            int cracked = 0;
-            for (double d : model.elementOutput().damage[0]) cracked += d > 0.5;
-            std::printf(
-                "bench: %s rock, %zu tets, %zu nodes, %d threads, %d steps in %.2f s: %.3g element-steps/s "
-                "(%.1f %% cracked), %.0f bytes/element\n",
-                weak ? "weak" : "granite", mesh.numTets(), mesh.numNodes(), threads, steps, seconds,
-                double(mesh.numTets()) * steps / seconds, 100.0 * cracked / double(mesh.numTets()),
-                bytesPerElement);
-            std::fflush(stdout);
-        }
-    }
 }
