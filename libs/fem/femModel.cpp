@@ -260,7 +260,8 @@ StepStatus FemModel::step(double dt)
     // Velocity interval: half a step at the start (initial velocities are at time 0).
     const double h = state_.previousTimeStep > 0.0 ? 0.5 * (state_.previousTimeStep + dt) : 0.5 * dt;
     const double c = 0.5 * parameters_.massDamping * h;
-    std::vector<double> increment(n3);
+    std::vector<double>& increment = stepIncrement_;
+    increment.resize(n3);
     double* v = state_.velocities.data();
     double* u = state_.displacements.data();
     const double* force = state_.netForces.data();
@@ -279,7 +280,13 @@ StepStatus FemModel::step(double dt)
     });
     for (auto& plate : state_.plates) plate.displacement += dt * plate.velocity;
 
-    const std::vector<double> oldInternal = state_.internalForces, oldExternal = state_.externalForces;
+    // The forces of the step's start move to the scratch buffers; computeForces rewrites
+    // every entry of the state's (gather and fill), so the swap costs no copy.
+    previousInternal_.resize(n3), previousExternal_.resize(n3);
+    previousInternal_.swap(state_.internalForces);
+    previousExternal_.swap(state_.externalForces);
+    const std::vector<double>& oldInternal = previousInternal_;
+    const std::vector<double>& oldExternal = previousExternal_;
     const long long bad = computeForces(increment, dt);
 
     // Trapezoidal work of internal and external forces over the step.

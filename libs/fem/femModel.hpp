@@ -168,6 +168,9 @@ private:
     std::vector<double> appliedForces_;       // 3 per node, empty = none
     bool forcesCurrent_ = false;
     FemState state_;
+    // Scratch of step(), kept between steps so a step allocates nothing: the displacement
+    // increment and the forces of the previous step (swapped in, not copied).
+    std::vector<double> stepIncrement_, previousInternal_, previousExternal_;
 };
 
 }  // namespace rockfrac::fem

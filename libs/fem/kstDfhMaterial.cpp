@@ -119,10 +119,13 @@ long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, 
                        [this, &c](std::size_t e, const SymTensor& strain) {
                            // Only what the update can change is written back (the
                            // thresholds never change; the frame only when a crack forms).
+                           // An elastic step leaves the plastic history as it was: not
+                           // writing it back saves 8 stores per element and step.
                            KstDfhPointState state = pointState(e);
                            const int cracksBefore = state.crackCount;
-                           const SymTensor stress = kstDfh::updateStress(c, state, strain);
-                           storePlasticHistory(e, state);
+                           bool historyChanged = false;
+                           const SymTensor stress = kstDfh::updateStress(c, state, strain, &historyChanged);
+                           if (historyChanged) storePlasticHistory(e, state);
                            if (state.crackCount != cracksBefore) storeCracks(e, state);
                            return stress;
                        });

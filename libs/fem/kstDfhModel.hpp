@@ -140,16 +140,30 @@ RF_HD inline SymTensor crackedElasticStress(const KstDfhConstants& c, const KstD
     return fromFrame(crackFrameStress, s.crackFrame);
 }
 
-// Step 3: KST return of a trial stress. Returns the admissible stress.
-RF_HD inline SymTensor kstReturn(const KstDfhConstants& c, const SymTensor& trial)
+// Step 3: KST return of a trial stress. Returns the admissible stress; `yielded` tells
+// whether it differs from the trial (plastic flow or the tensile apex).
+RF_HD inline SymTensor kstReturn(const KstDfhConstants& c, const SymTensor& trial, bool& yielded)
 {
+    yielded = true;
     const double pressure = -trace(trial) / 3.0;
     if (pressure < c.pressureCutoff) return SymTensor::isotropic(-c.pressureCutoff);  // apex
     const SymTensor s = deviator(trial);
-    const double equivalent = std::sqrt(1.5 * doubleContraction(s, s));
-    const double yield = c.yieldStress(pressure);
-    if (equivalent <= yield) return trial;
+    // sigma_eq <= yield compared squared: no square root on the elastic path, which is
+    // what almost every element takes at almost every step.
+    const double equivalentSquared = 1.5 * doubleContraction(s, s);
+    const double radicand = c.a0 + c.a1 * pressure + c.a2 * pressure * pressure;
+    const double yieldSquared = radicand > 0.0 ? radicand : 0.0;
+    if (equivalentSquared <= yieldSquared) {
+        yielded = false;
+        return trial;
+    }
+    const double equivalent = std::sqrt(equivalentSquared), yield = c.yieldStress(pressure);
     return (yield / equivalent) * s - SymTensor::isotropic(pressure);
+}
+RF_HD inline SymTensor kstReturn(const KstDfhConstants& c, const SymTensor& trial)
+{
+    bool yielded = false;
+    return kstReturn(c, trial, yielded);
 }
 
 // Step 4: freezes the next crack direction if its threshold is exceeded.
@@ -190,28 +204,37 @@ RF_HD inline bool formNextCrack(KstDfhPointState& s, const SymTensor& stress)
     return false;
 }
 
-// Full update of one point for the total strain; returns the stress.
-RF_HD inline SymTensor updateStress(const KstDfhConstants& c, KstDfhPointState& s, const SymTensor& strain)
+// Full update of one point for the total strain; returns the stress. `historyChanged`
+// (optional) tells whether the plastic strain, its equivalent or the compaction strain
+// changed; when it is false the caller need not store them (an elastic step).
+RF_HD inline SymTensor updateStress(const KstDfhConstants& c, KstDfhPointState& s, const SymTensor& strain,
+                                    bool* historyChanged = nullptr)
 {
     const SymTensor startPlasticStrain = s.plasticStrain;
     const double startCompaction = s.compactionStrain;
     SymTensor stress;
+    bool changed = false;
     for (int attempt = 0; attempt < 4; ++attempt) {
         double compaction = startCompaction;
         updateCompaction(c, strain - startPlasticStrain, compaction);
         const SymTensor elasticStrain = strain - startPlasticStrain + SymTensor::isotropic(compaction / 3.0);
         const SymTensor trial = crackedElasticStress(c, s, elasticStrain);
-        stress = kstReturn(c, trial);
-        // Plastic strain that carries the stress correction (isotropic compliance).
-        const SymTensor plasticIncrement = c.elastic.strain(trial - stress);
-        s.plasticStrain = startPlasticStrain + plasticIncrement;
+        bool yielded = false;
+        stress = kstReturn(c, trial, yielded);
         s.compactionStrain = compaction;
+        changed = yielded || compaction != startCompaction;
+        // Plastic strain that carries the stress correction (isotropic compliance); none
+        // on an elastic step (the stress is the trial).
+        const SymTensor plasticIncrement = yielded ? c.elastic.strain(trial - stress) : SymTensor{};
+        s.plasticStrain = yielded ? startPlasticStrain + plasticIncrement : startPlasticStrain;
         if (!(c.damageEnabled && formNextCrack(s, stress))) {
-            s.equivalentPlasticStrain +=
-                std::sqrt(2.0 / 3.0 * doubleContraction(plasticIncrement, plasticIncrement));
+            if (yielded)
+                s.equivalentPlasticStrain +=
+                    std::sqrt(2.0 / 3.0 * doubleContraction(plasticIncrement, plasticIncrement));
             break;
         }
     }
+    if (historyChanged) *historyChanged = changed;
     return stress;
 }
 

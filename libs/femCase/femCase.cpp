@@ -137,8 +137,17 @@ std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, d
             if (!inserted) faces.erase(it);
         }
     std::vector<double> forces(3 * mesh.numNodes(), 0.0);
-    topForce = 0.0;
     const double cosLimit = std::cos(halfAngle);
+    // The arcs are integrated exactly, not facet by facet: with a few facets across an
+    // arc, taking whole facets whose centroid lies on it loads a discrete arc that can be
+    // 15 % narrower on one side than on the other, and the self-equilibrating correction
+    // below then moves the resultant away from the one reported (measured on the 2 mm BDT
+    // mesh: 4.62e-5 N/Pa on the upper arc and 4.10e-5 N/Pa on the lower, 5.4e-5 nominal).
+    // Each curved facet is cut into n^2 congruent sub-triangles; a sub-triangle whose
+    // centroid lies within the arc adds its share of the pressure, lumped to the facet's
+    // nodes with the linear shape functions at that centroid (consistent nodal forces of
+    // the pressure on the exact arc, up to h/n along its edges).
+    constexpr int n = 24;
     for (const auto& [key, f] : faces) {
         const Vec3 &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
         Vec3 areaNormal = 0.5 * cross(b - a, c - a);  // |.| = area
@@ -148,12 +157,22 @@ std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, d
         const Vec3 radial{centroid.x - centre.x, 0.0, centroid.z - centre.z};
         // Curved surface only: the outward normal lies in the x-z plane, not along the axis.
         if (std::abs(areaNormal.y) > 0.5 * area || !(norm(radial) > 0)) continue;
-        if (std::abs(radial.z) / norm(radial) < cosLimit) continue;
         // Pressure acts against the outward normal, towards the centre.
-        const Vec3 force = -1.0 * areaNormal;
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j) forces[3 * f[k] + j] += force[j] / 3.0;
-        if (radial.z > 0) topForce += -force.z;
+        const Vec3 subForce = (-1.0 / (n * n)) * areaNormal;
+        // Sub-triangle centroids in barycentric coordinates (i + 1/3, j + 1/3)/n (upright)
+        // and (i + 2/3, j + 2/3)/n (inverted): n^2 triangles of equal area.
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j)
+                for (int inverted = 0; inverted < (i + j < n - 1 ? 2 : 1); ++inverted) {
+                    const double shift = inverted ? 2.0 / 3.0 : 1.0 / 3.0;
+                    const double wb = (i + shift) / n, wc = (j + shift) / n, wa = 1.0 - wb - wc;
+                    const Vec3 point = wa * a + wb * b + wc * c;
+                    const double rx = point.x - centre.x, rz = point.z - centre.z;
+                    if (std::abs(rz) < cosLimit * std::hypot(rx, rz)) continue;
+                    const double weights[3] = {wa, wb, wc};
+                    for (int k = 0; k < 3; ++k)
+                        for (int d = 0; d < 3; ++d) forces[3 * f[k] + d] += weights[k] * subForce[d];
+                }
     }
     // The facets of the two arcs differ slightly (an unstructured mesh): remove the net
     // force, spread evenly over the loaded nodes, so the load is self-equilibrated and
@@ -166,6 +185,11 @@ std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, d
     }
     for (int i : loaded)
         for (int j = 0; j < 3; ++j) forces[3 * i + j] -= net[j] / static_cast<double>(loaded.size());
+    // The resultant reported is the one applied: the downward force on the upper arc
+    // after the correction.
+    topForce = 0.0;
+    for (int i : loaded)
+        if (mesh.nodes[i].z > centre.z) topForce -= forces[3 * i + 2];
     return forces;
 }
 

@@ -357,6 +357,7 @@ struct FeFractureRun::Impl {
         if (!loadingStarted(model->time())) return;
         const double f = plateForce();
         run.peakForce = std::max(run.peakForce, f);
+        if (loading.kind == FemLoading::Kind::arcLoad) return;  // trackArcFailure instead
         // The detectors start once the force has reached stop/minPeakForce, so the force
         // oscillation of the first contact is not taken for a failure.
         if (run.peakForce < loading.minPeakForce) return;
@@ -372,6 +373,28 @@ struct FeFractureRun::Impl {
             }
             if (detectors[k].update(f)) run.detectorFailed[k] = 1.0;
         }
+    }
+
+    // Arc load (load control), at sample steps: the force never drops, so the failure
+    // load is the applied resultant at which the disc stops carrying it statically, i.e.
+    // the first time KE / W_ext exceeds the quasi-static limit after stop/minPeakForce
+    // (the crack runs unstably and the halves accelerate apart). This is the explicit
+    // counterpart of the FreeFEM reference's criterion (damage cascading at a fixed load).
+    // All detectors fire at once, so the failure load does not depend on the drop fraction.
+    // Armed only when stop/minPeakForce > 0 (the ramp's start is not quasi-static either).
+    void trackArcFailure()
+    {
+        if (loading.kind != FemLoading::Kind::arcLoad || detectors[1].failed() || !(loading.minPeakForce > 0))
+            return;
+        const double f = plateForce();
+        if (!(f > loading.minPeakForce) || !(kineticRatio() > quasiStaticLimit)) return;
+        for (std::size_t k = 0; k < detectors.size(); ++k) {
+            detectors[k].update(f);
+            detectors[k].update(-1.0);
+            run.detectorMaximum[k] = f, run.detectorTime[k] = model->time(), run.detectorFailed[k] = 1.0;
+        }
+        run.peakTime = model->time(), run.peakGap = gapChange(), run.peakElongation = elongation();
+        run.kineticRatioAtPeak = kineticRatio();
     }
 
     // At sample steps, while loading up to failure: warn once when KE / W_ext exceeds the
@@ -452,7 +475,9 @@ struct FeFractureRun::Impl {
 
     bool stopCriterionMet() const
     {
-        if (!loadingStarted(model->time()) || !(loading.stopForceFraction > 0)) return false;
+        if (!loadingStarted(model->time())) return false;
+        if (loading.kind == FemLoading::Kind::arcLoad) return detectors[1].failed();
+        if (!(loading.stopForceFraction > 0)) return false;
         return run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
                plateForce() < loading.stopForceFraction * run.peakForce;
     }
@@ -487,12 +512,20 @@ struct FeFractureRun::Impl {
         auto load = [&](int k) { return detectors[k].failed() ? detectors[k].failureLoad() : 0.0; };
         out.append({run.peakTime, load(1), fractions[1], run.peakGap, run.peakElongation,
                     run.kineticRatioAtPeak, load(0), load(2)});
-        std::printf(
-            "Failure load %.6g N (first drop of more than %.0f %% below the running maximum) at t = %.6g s, "
-            "gap change %.4g mm, extensometer %.4g um; sensitivity: %.6g N (10 %%), %.6g N (30 %%, 0 = "
-            "no such drop)\n",
-            load(1), 100 * fractions[1], run.peakTime, 1e3 * run.peakGap, 1e6 * run.peakElongation, load(0),
-            load(2));
+        if (loading.kind == FemLoading::Kind::arcLoad) {
+            std::printf(
+                "Failure load %.6g N (arc load: kinetic energy above %.0f %% of the external work) at "
+                "t = %.6g s\n",
+                load(1), 100 * quasiStaticLimit, run.peakTime);
+        } else {
+            std::printf(
+                "Failure load %.6g N (first drop of more than %.0f %% below the running maximum) at t = %.6g "
+                "s, "
+                "gap change %.4g mm, extensometer %.4g um; sensitivity: %.6g N (10 %%), %.6g N (30 %%, 0 = "
+                "no such drop)\n",
+                load(1), 100 * fractions[1], run.peakTime, 1e3 * run.peakGap, 1e6 * run.peakElongation,
+                load(0), load(2));
+        }
         const double width = bounds.hi.x - bounds.lo.x, height = bounds.hi.z - bounds.lo.z;
         if (std::abs(width - height) < 0.02 * height)
             std::printf("  as a Brazilian disc (D %.4g mm, t %.4g mm): UTS = 2F/(pi D t) = %.4g MPa\n",
@@ -596,13 +629,16 @@ int FeFractureRun::execute()
         }
         r.track();
         const bool sampleDue = r.run.step % r.sampleInterval == 0;
-        if (sampleDue) sample();
+        if (sampleDue) r.trackArcFailure(), sample();
         const bool stop = r.stopCriterionMet();
         if (interrupted()) {
             reason = "interrupted by a signal: state written, continue with startFrom latestTime";
             exitCode = interruptExitCode();
         }
-        if (stop) reason = "stop criterion met (force below the set fraction of its peak)";
+        if (stop)
+            reason = r.loading.kind == FemLoading::Kind::arcLoad
+                         ? "failure under the arc load (kinetic energy above 1 % of the external work)"
+                         : "stop criterion met (force below the set fraction of its peak)";
         // A write time adds a row to the series only when the uninterrupted run has it
         // too: not at the step a signal arrived, or the continued series would differ.
         const bool regularWrite = r.time.writeDue(r.run.step) || stop || r.run.step == endStep;
