@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/textFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
@@ -16,14 +17,6 @@ namespace {
 
 const fs::path defaultFile = "constant/rockProperties";
 
-std::string readText(const fs::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The entry must exist in the case: a calibration changes entries, it never adds one.
 void checkEntryExists(const Dictionary& dict, const std::string& owner, const fs::path& caseDir,
                       const fs::path& file, const std::string& entry)
@@ -32,7 +25,7 @@ void checkEntryExists(const Dictionary& dict, const std::string& owner, const fs
     if (!fs::is_regular_file(path))
         throw UserError(dict.endLocation().str() + ": " + owner + ": the case has no '" + file.string() +
                         "' ('" + path.string() + "')");
-    if (!hasTextEntry(readText(path), entry, path.string()))
+    if (!hasTextEntry(readFileText(path), entry, path.string()))
         throw UserError(dict.endLocation().str() + ": " + owner + ": '" + path.string() + "' has no entry '" +
                         entry + "'; the calibration changes existing entries only");
 }

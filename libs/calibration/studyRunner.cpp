@@ -9,6 +9,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/textFile.hpp"
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
@@ -22,14 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::string quoted(const std::string& text)
 {
     std::string q = "\"";
@@ -42,7 +35,7 @@ std::string quoted(const std::string& text)
 
 std::string lastLine(const fs::path& file)
 {
-    std::istringstream in(readText(file));
+    std::istringstream in(readFileText(file));
     std::string line, last;
     while (std::getline(in, line))
         if (!line.empty()) last = line;
@@ -217,7 +210,7 @@ std::vector<MemberRun> runSet(const CalibrationStudy& study, const RunSet& set, 
     fs::create_directories(set.directory / "system");
     const fs::path dictFile = set.directory / "system/runCasesDict";
     const std::string text = runCasesDictText(study, set);
-    if (!fs::exists(dictFile) || readText(dictFile) != text)
+    if (!fs::exists(dictFile) || readFileText(dictFile) != text)
         writeFileAtomically(dictFile, [&](std::ostream& out) { out << text; });
     const fs::path log = set.directory / "log.runCases";
     const int status = runForwardingSignals(

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/textFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
@@ -14,14 +15,6 @@ namespace rockfrac::explain {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readText(const fs::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 fs::path caseRelative(const Dictionary& dict, const fs::path& studyDir, const std::string& key)
 {
@@ -54,7 +47,7 @@ calibration::SeedList readSeeds(const Dictionary& dict, const fs::path& caseDir,
         throw UserError(s.location("values").str() + ": " + std::to_string(seeds.values.size()) +
                         " seeds; at least " + std::to_string(minimum) + " are needed: " + why);
     const fs::path file = caseDir / seeds.file;
-    if (!fs::is_regular_file(file) || !hasTextEntry(readText(file), seeds.entry, file.string()))
+    if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), seeds.entry, file.string()))
         throw UserError(s.location("entry").str() + ": the case has no entry '" + seeds.entry + "' in '" +
                         file.string() + "'");
     return seeds;
@@ -69,16 +62,35 @@ void readCommands(const Dictionary& dict, std::string& prepare, std::string& com
 
 }  // namespace
 
-calibration::CalibrationStudy ExplainStudy::runStudy() const
+namespace {
+
+// What every runCases study of explainGap and makeTwinData shares: a DEM case, run
+// once per seed by `command` after `prepare` in the template.
+calibration::CalibrationStudy demRunStudy(const fs::path& directory, const fs::path& dictionary,
+                                          const fs::path& targetCase, const std::string& prepare,
+                                          const std::string& command, int jobs,
+                                          const calibration::SeedList& seeds, const fs::path& response)
 {
     calibration::CalibrationStudy s;
-    s.directory = simulations;
+    s.directory = directory;
     s.dictionary = dictionary;
     s.model = "dem";
     s.targetCase = targetCase;
-    s.prepareCommand = prepareCommand;
+    s.prepareCommand = prepare;
     s.command = command;
     s.jobs = jobs;
+    s.seeds = seeds;
+    s.responseFile = response;
+    s.forceColumn = "force";
+    return s;
+}
+
+}  // namespace
+
+calibration::CalibrationStudy ExplainStudy::runStudy() const
+{
+    calibration::CalibrationStudy s =
+        demRunStudy(simulations, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
     for (const auto& b : baseline) s.parameters.push_back(b.where);
     for (const std::string& name : effects) {
         const EffectDescriptor& d = findEffect(name, dictionary.string());
@@ -92,8 +104,6 @@ calibration::CalibrationStudy ExplainStudy::runStudy() const
         s.parameters.push_back(p);
     }
     s.tied = tied;
-    s.seeds = seeds;
-    s.responseFile = responseFile;
     s.forceColumn = forceColumn;
     return s;
 }
@@ -139,7 +149,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         b.where.high = range[1];
         b.relativeStep = d.getScalarOrDefault("relativeStep", 0.1, Bounds::open(0, 1));
         const fs::path file = s.targetCase / b.where.file;
-        if (!fs::is_regular_file(file) || !hasTextEntry(readText(file), b.where.entry, file.string()))
+        if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), b.where.entry, file.string()))
             throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry + "' in '" +
                             file.string() + "'");
         s.baseline.push_back(b);
@@ -197,18 +207,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 
 calibration::CalibrationStudy TwinStudy::runStudy() const
 {
-    calibration::CalibrationStudy s;
-    s.directory = directory;
-    s.dictionary = dictionary;
-    s.model = "dem";
-    s.targetCase = targetCase;
-    s.prepareCommand = prepareCommand;
-    s.command = command;
-    s.jobs = jobs;
-    s.seeds = seeds;
-    s.responseFile = responseFile;
-    s.forceColumn = "force";
-    return s;
+    return demRunStudy(directory, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
 }
 
 TwinStudy readTwinStudy(const fs::path& studyDirectory)

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/textFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
@@ -15,14 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The file and entry that `owner` (a parameter or the seeds) sets in each member:
 // both must exist in the template, so that a typo cannot add a stray entry.
 EntryTarget readTarget(const Dictionary& dict, const std::string& owner, const fs::path& templateCase)
@@ -33,7 +26,7 @@ EntryTarget readTarget(const Dictionary& dict, const std::string& owner, const f
         throw UserError(dict.location("file").str() + ": " + owner + ": file '" + target.file.string() +
                         "' is not in the template case '" + templateCase.string() +
                         "'; give a path relative to the template, e.g. constant/rockProperties");
-    if (!hasTextEntry(readText(file), target.entry, file.string()))
+    if (!hasTextEntry(readFileText(file), target.entry, file.string()))
         throw UserError(dict.location("entry").str() + ": " + owner + ": '" + file.string() +
                         "' has no entry '" + target.entry +
                         "'; add it to the template (runCases only changes existing entries)");
