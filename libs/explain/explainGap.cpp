@@ -356,21 +356,24 @@ ExplainOutcome Analysis::execute()
     start.runs = base0_;
     start.model = model0_;
     start.chi = chiCal(model0_);
-    const Fit baseline = refit(baselineFree, start, "fit-baseline");
+    // No free baseline parameter: the case is tested as calibrated elsewhere (e.g. bonds
+    // from Brazilian discs judged on single particle breakage, the paper's question).
+    const Fit baseline = nb_ > 0 ? refit(baselineFree, start, "fit-baseline") : start;
     const int dof = std::max(1, static_cast<int>(obs_.size()) - nb_);
     out.baselineChiSquare = baseline.chi;
     out.baselinePValue = chiSquareSurvival(baseline.chi, dof);
     out.baselineHeldOutGap = heldGap(baseline.model);
     std::string fitted;
     for (int j = 0; j < nb_; ++j) fitted += (j ? ", " : "") + describeParameter(j, baseline.values[static_cast<std::size_t>(j)]);
-    say("baseline re-fitted (" + fitted + "): chi-square " + format(baseline.chi) + " on " + std::to_string(dof) +
+    if (nb_ == 0) fitted = "no baseline parameter free: the case as calibrated";
+    say(std::string(nb_ > 0 ? "baseline re-fitted (" : "baseline (") + fitted + "): chi-square " + format(baseline.chi) + " on " + std::to_string(dof) +
         " degrees of freedom, p = " + format(out.baselinePValue, 3) + "; held-out gap " +
         format(out.baselineHeldOutGap, 3) + " (RMS of the feature errors in standard errors)");
 
     // 4. Score test of every effect at the re-fitted baseline.
     const Eigen::MatrixXd A = whitened(baselineFree);
-    const Eigen::MatrixXd projector =
-        Eigen::MatrixXd::Identity(A.rows(), A.rows()) - A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
+    Eigen::MatrixXd projector = Eigen::MatrixXd::Identity(A.rows(), A.rows());
+    if (nb_ > 0) projector -= A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
     const Eigen::VectorXd r = residual(baseline.model, cal_, sigmaCal_);
     std::vector<Eigen::VectorXd> projected;
     for (int e = 0; e < ne_; ++e) {
@@ -506,7 +509,8 @@ ExplainOutcome Analysis::execute()
                     }
                     const Eigen::MatrixXd B = full.leftCols(nb_);
                     Eigen::VectorXd c = full.col(nb_);
-                    c -= B * (B.transpose() * B).completeOrthogonalDecomposition().pseudoInverse() * (B.transpose() * c);
+                    if (nb_ > 0)
+                        c -= B * (B.transpose() * B).completeOrthogonalDecomposition().pseudoInverse() * (B.transpose() * c);
                     const double n = c.norm();
                     return n > 0 ? Eigen::VectorXd(c / n) : c;
                 };

@@ -38,6 +38,8 @@ scenario seating    "seatingOffset { depth 0.03e-3; closureForce 1500; }" explai
 scenario compliance "machineCompliance { compliance 5e-9; }"              explained machineCompliance
 scenario crumbling  "contactCrumbling { strengthLoss 0.8; depth 8e-3; }"      explained contactCrumbling
 scenario scatter    "bondStrengthScatter { inverseModulus 0.6; seed 5; }"   explained bondStrengthScatter
+# The case as calibrated (baseline { }): the effect alone is fitted.
+FIXED_BASELINE=1 scenario fixedBaseline "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset
 # Displacement at failure but no curves: seating and compliance both only add to it.
 scenario ambiguous  "seatingOffset { depth 0.15e-3; closureForce 1500; }" indistinguishable \
     "seatingOffset machineCompliance" "peakForce peakForceSpread peakDisplacement"
