@@ -332,7 +332,17 @@ ExplainOutcome Analysis::execute()
         probe = clip(probe);
         step = probe[static_cast<std::size_t>(j)] - theta0_[static_cast<std::size_t>(j)];
         probeSize_.push_back(step);
-        const PointRuns runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
+        PointRuns runs;
+        try {
+            runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
+        } catch (const UserError& error) {
+            // A baseline parameter is needed; an effect whose probe does not run is left out
+            // of the screening (its column stays zero, so its score is zero) and said so.
+            if (j < nb_) throw;
+            say("  " + run_.parameters[static_cast<std::size_t>(j)].name +
+                ": not screened, the runs of its probe failed: " + error.what());
+            continue;
+        }
         const FeatureSummary m = runs.summary();
         for (int f = 0; f < nFeatures; ++f) jacobian_(f, j) = (m.value[f] - model0_.value[f]) / step;
     }
