@@ -143,10 +143,15 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
     in.reference_length = a.length_i[k] + a.length_j[k];
     in.bond_area = a.bond_area[k];
     in.damping_beta = a.damping_beta[k];
-    BondMaterial material = a.material;
+    // A model effect may scale this interface's strengths; without one the shared
+    // constants are used as they are (no copy per interface).
+    BondMaterial scaled;
+    const BondMaterial* material = &a.material;
     if (a.strength_scale) {
-        material.tensile_strength *= a.strength_scale[k];
-        material.cohesion *= a.strength_scale[k];
+        scaled = a.material;
+        scaled.tensile_strength *= a.strength_scale[k];
+        scaled.cohesion *= a.strength_scale[k];
+        material = &scaled;
     }
     Vec3 force, torque_i, torque_j;
     int intact = 0;
@@ -158,7 +163,7 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
         in.relative_velocity = (a.velocity[cj] + cross(a.angular_velocity_world[cj], arm_j)) -
                                (a.velocity[ci] + cross(a.angular_velocity_world[ci], arm_i));
         BondHistory history = loadBondHistory(a, b);
-        const BondOutput out = Law::evaluate(material, in, history);
+        const BondOutput out = Law::evaluate(*material, in, history);
         storeBondHistory(a, b, history);
         sums.strain_energy += out.strain_energy;
         sums.damping_power += out.damping_power;

@@ -10,6 +10,7 @@
 // (1 - strengthLoss) of its tensile strength and cohesion. Those bonds fail early,
 // the cells at the contact rearrange, the contact flattens; the rest of the
 // specimen is untouched. strengthLoss = 0 is the baseline model exactly.
+#include <algorithm>
 #include <sstream>
 
 #include "core/dictionary.hpp"

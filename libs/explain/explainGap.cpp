@@ -131,11 +131,9 @@ private:
     }
     std::vector<double> clip(std::vector<double> v) const
     {
-        for (int j = 0; j < nb_ + ne_; ++j) {
-            const double lo = j < nb_ ? s_.baseline[static_cast<std::size_t>(j)].where.low : run_.parameters[static_cast<std::size_t>(j)].low;
-            const double hi = j < nb_ ? s_.baseline[static_cast<std::size_t>(j)].where.high : run_.parameters[static_cast<std::size_t>(j)].high;
-            v[static_cast<std::size_t>(j)] = std::clamp(v[static_cast<std::size_t>(j)], lo, hi);
-        }
+        // run_.parameters holds the baseline parameters first, then one per effect.
+        for (std::size_t j = 0; j < v.size(); ++j)
+            v[j] = std::clamp(v[j], run_.parameters[j].low, run_.parameters[j].high);
         return v;
     }
     // Gauss–Newton refit of `free` parameters from `start` (two steps, each checked by simulation).
