@@ -4,10 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/textFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/textFile.hpp"
 
 namespace rockfrac::calibration {
 

@@ -9,11 +9,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/textFile.hpp"
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/textFile.hpp"
 #include "stats/subprocess.hpp"
 #include "stats/textTable.hpp"
 
@@ -193,8 +193,8 @@ void prepareTemplate(const CalibrationStudy& study)
             "#eval \"" + formatNumber(t.factor) + " * $" + p.entry.substr(parent(p.entry).size()) + "\"");
     }
     if (!study.prepareCommand.empty()) {
-        std::cout << "preparing the template of the runs (" << study.prepareCommand << ") in "
-                  << dir.string() << std::endl;
+        std::cout << "preparing the template of the runs (" << study.prepareCommand << ") in " << dir.string()
+                  << std::endl;
         const int status =
             runForwardingSignals({"/bin/sh", "-c", study.prepareCommand}, dir, dir / "log.prepare");
         if (status != 0)

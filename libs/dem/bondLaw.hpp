@@ -88,7 +88,7 @@ struct BondKernelArgs {
     const double* length_i = nullptr;
     const double* length_j = nullptr;
     const double* bond_area = nullptr;
-    const double* damping_beta = nullptr;  // per interface, seconds
+    const double* damping_beta = nullptr;    // per interface, seconds
     const double* strength_scale = nullptr;  // per interface factor on sigma-bar and C; nullptr = 1
     int* intact_bonds = nullptr;
     Vec3* force_on_i = nullptr;   // sum over the interface's bonds

@@ -1397,8 +1397,8 @@ std::size_t DemModel::memoryBytes() const
     const InterfaceArrays& f = interfaces_;
     total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
              bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
-             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) + bytes(f.force_on_i) + bytes(f.torque_on_i) +
-             bytes(f.torque_on_j);
+             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) + bytes(f.force_on_i) +
+             bytes(f.torque_on_i) + bytes(f.torque_on_j);
     const BondArrays& b = bonds_;
     total += bytes(b.anchor_i) + bytes(b.anchor_j) + bytes(b.stage) + bytes(b.onset_displacement) +
              bytes(b.onset_stress) + bytes(b.rupture_displacement) + bytes(b.max_displacement) +

@@ -11,8 +11,8 @@
 #include "core/progress.hpp"
 #include "core/timeControl.hpp"
 #include "demCase/demCase.hpp"
-#include "effects/modelEffect.hpp"
 #include "demCuda/cudaDemModel.hpp"
+#include "effects/modelEffect.hpp"
 #include "io/timeSeries.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
 
@@ -231,10 +231,9 @@ struct BondedDemRun::Impl {
 
     static std::vector<Column> columns()
     {
-        return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},       {"forceLower", "N"},
-                {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},      {"dissipated", "J"},
-                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"},
-                {"plateApproach", "m"}};
+        return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},        {"forceLower", "N"},
+                {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},       {"dissipated", "J"},
+                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"}, {"plateApproach", "m"}};
     }
 
     void writeTime()

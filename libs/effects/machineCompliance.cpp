@@ -20,7 +20,8 @@ namespace {
 
 class MachineCompliance : public ModelEffect {
 public:
-    explicit MachineCompliance(const Dictionary& d) : compliance_(d.getScalar("compliance", Bounds::closed(0.0, 1e-6)))
+    explicit MachineCompliance(const Dictionary& d)
+        : compliance_(d.getScalar("compliance", Bounds::closed(0.0, 1e-6)))
     {
     }
 

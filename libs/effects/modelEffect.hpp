@@ -32,7 +32,10 @@ public:
     virtual void applyToModel(DemModel&, const EffectContext&) const {}
     // What the machine records as displacement when the plates have approached by
     // `plateApproach` under `force`: elements in series with the specimen add to it.
-    virtual double recordedDisplacement(double plateApproach, double /*force*/) const { return plateApproach; }
+    virtual double recordedDisplacement(double plateApproach, double /*force*/) const
+    {
+        return plateApproach;
+    }
     // One line for the log: "seatingOffset: depth 0.05 mm, closure force 1 kN".
     virtual std::string describe() const = 0;
 };
@@ -40,21 +43,21 @@ public:
 // How explainGap probes an effect: the entry it fits, its neutral value (the
 // baseline), the size of the trial step, and its physical bounds.
 enum class ProbeScale {
-    absolute,            // probe as given
-    peakDisplacement,    // probe x the baseline's displacement at peak [m]
-    peakCompliance,      // probe x the baseline's displacement at peak / peak force [m/N]
+    absolute,          // probe as given
+    peakDisplacement,  // probe x the baseline's displacement at peak [m]
+    peakCompliance,    // probe x the baseline's displacement at peak / peak force [m/N]
 };
 
 struct EffectDescriptor {
     std::string name;
-    std::string physics;     // one sentence: what it is
-    std::string signature;   // one sentence: what it does to the measured response
-    std::string parameter;   // the fitted entry of the effect's sub-dictionary
+    std::string physics;    // one sentence: what it is
+    std::string signature;  // one sentence: what it does to the measured response
+    std::string parameter;  // the fitted entry of the effect's sub-dictionary
     std::string unit;
-    double neutral = 0.0;    // the value that switches the effect off
-    double probe = 0.0;      // trial step (scaled by probeScale)
+    double neutral = 0.0;  // the value that switches the effect off
+    double probe = 0.0;    // trial step (scaled by probeScale)
     ProbeScale probeScale = ProbeScale::absolute;
-    double low = 0.0, high = 0.0;  // bounds of the fitted parameter
+    double low = 0.0, high = 0.0;           // bounds of the fitted parameter
     std::vector<std::string> fixedEntries;  // further required entries (not fitted)
     std::unique_ptr<ModelEffect> (*make)(const Dictionary& effectDict) = nullptr;
 };

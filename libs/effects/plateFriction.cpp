@@ -18,7 +18,10 @@ namespace {
 
 class PlateFriction : public ModelEffect {
 public:
-    explicit PlateFriction(const Dictionary& d) : factor_(d.getScalar("frictionFactor", Bounds::closed(0.0, 2.0))) {}
+    explicit PlateFriction(const Dictionary& d)
+        : factor_(d.getScalar("frictionFactor", Bounds::closed(0.0, 2.0)))
+    {
+    }
 
     void applyToParameters(DemParameters& p) const override { p.rock_steel_friction *= factor_; }
 

@@ -18,7 +18,9 @@ namespace {
 
 class RateDamping : public ModelEffect {
 public:
-    explicit RateDamping(const Dictionary& d) : factor_(d.getScalar("betaFactor", Bounds::closed(0.05, 10.0))) {}
+    explicit RateDamping(const Dictionary& d) : factor_(d.getScalar("betaFactor", Bounds::closed(0.05, 10.0)))
+    {
+    }
 
     void applyToParameters(DemParameters& p) const override { p.bond_damping *= factor_; }
 

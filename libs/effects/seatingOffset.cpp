@@ -35,7 +35,8 @@ public:
     std::string describe() const override
     {
         std::ostringstream s;
-        s << "seatingOffset: " << 1e3 * depth_ << " mm closing under about " << 1e-3 * closure_force_ << " kN";
+        s << "seatingOffset: " << 1e3 * depth_ << " mm closing under about " << 1e-3 * closure_force_
+          << " kN";
         return s.str();
     }
 

@@ -26,10 +26,14 @@ namespace fs = std::filesystem;
 const char* verdictName(Verdict v)
 {
     switch (v) {
-        case Verdict::noGapBeyondScatter: return "noGapBeyondScatter";
-        case Verdict::explained: return "explained";
-        case Verdict::indistinguishable: return "indistinguishable";
-        case Verdict::unexplained: return "unexplained";
+        case Verdict::noGapBeyondScatter:
+            return "noGapBeyondScatter";
+        case Verdict::explained:
+            return "explained";
+        case Verdict::indistinguishable:
+            return "indistinguishable";
+        case Verdict::unexplained:
+            return "unexplained";
     }
     return "?";
 }
@@ -48,12 +52,18 @@ struct Half {
 const char* measurementFor(int feature)
 {
     switch (feature) {
-        case peakForce: return "the failure loads";
-        case peakForceSpread: return "more specimens (the spread of the failure loads)";
-        case peakDisplacement: return "the displacement at failure";
-        case secantStiffness: return "full force-displacement curves (the stiffness between 30 and 70 % of the peak)";
-        case toeIndex: return "full force-displacement curves from the first contact (the toe)";
-        case softening: return "force-displacement curves past the peak (the softening)";
+        case peakForce:
+            return "the failure loads";
+        case peakForceSpread:
+            return "more specimens (the spread of the failure loads)";
+        case peakDisplacement:
+            return "the displacement at failure";
+        case secantStiffness:
+            return "full force-displacement curves (the stiffness between 30 and 70 % of the peak)";
+        case toeIndex:
+            return "full force-displacement curves from the first contact (the toe)";
+        case softening:
+            return "force-displacement curves past the peak (the softening)";
     }
     return "?";
 }
@@ -108,7 +118,8 @@ private:
         simulations_ += static_cast<int>(r.features.size()) + r.failed;
         return r;
     }
-    Eigen::VectorXd residual(const FeatureSummary& model, const Half& half, const std::vector<double>& sigma) const
+    Eigen::VectorXd residual(const FeatureSummary& model, const Half& half,
+                             const std::vector<double>& sigma) const
     {
         Eigen::VectorXd r(static_cast<int>(obs_.size()));
         for (std::size_t i = 0; i < obs_.size(); ++i)
@@ -126,7 +137,8 @@ private:
         Eigen::MatrixXd m(static_cast<int>(obs_.size()), static_cast<int>(parameters.size()));
         for (std::size_t i = 0; i < obs_.size(); ++i)
             for (std::size_t j = 0; j < parameters.size(); ++j)
-                m(static_cast<int>(i), static_cast<int>(j)) = jacobian_(obs_[i], parameters[j]) / sigmaCal_[i];
+                m(static_cast<int>(i), static_cast<int>(j)) =
+                    jacobian_(obs_[i], parameters[j]) / sigmaCal_[i];
         return m;
     }
     std::vector<double> clip(std::vector<double> v) const
@@ -144,7 +156,8 @@ private:
         double chi = 0.0;
         Eigen::MatrixXd covariance;  // of the free parameters (linearised)
     };
-    Fit refit(const std::vector<int>& free, const Fit& start, const std::string& label, const Fit* previous = nullptr);
+    Fit refit(const std::vector<int>& free, const Fit& start, const std::string& label,
+              const Fit* previous = nullptr);
     std::string describeParameter(int j, double v) const
     {
         return run_.parameters[static_cast<std::size_t>(j)].name + " = " + format(v) + " " +
@@ -157,19 +170,24 @@ void Analysis::splitMeasurements()
 {
     const auto& specimens = s_.measurements.specimens;
     const std::size_t n = specimens.size();
-    const std::size_t nHeld = static_cast<std::size_t>(std::lround(s_.heldOutFraction * static_cast<double>(n)));
+    const std::size_t nHeld =
+        static_cast<std::size_t>(std::lround(s_.heldOutFraction * static_cast<double>(n)));
     if (n < 6 || nHeld < 3 || n - nHeld < 3)
-        throw UserError(s_.measurementsFile.string() + ": " + std::to_string(n) +
-                        " specimens; explainGap fits on some and checks on the others held out (heldOut " +
-                        format(s_.heldOutFraction) +
-                        "), and each part needs at least 3: give at least 6 specimens, or change heldOut in " +
-                        s_.dictionary.string());
-    curves_ = std::all_of(specimens.begin(), specimens.end(), [](const auto& sp) { return sp.curve.has_value(); });
+        throw UserError(
+            s_.measurementsFile.string() + ": " + std::to_string(n) +
+            " specimens; explainGap fits on some and checks on the others held out (heldOut " +
+            format(s_.heldOutFraction) +
+            "), and each part needs at least 3: give at least 6 specimens, or change heldOut in " +
+            s_.dictionary.string());
+    curves_ =
+        std::all_of(specimens.begin(), specimens.end(), [](const auto& sp) { return sp.curve.has_value(); });
     // Every k-th specimen is held out, spread over the file order (no cherry-picking).
     std::vector<CurveFeatures> calCurves, heldCurves;
     for (std::size_t i = 0; i < n; ++i) {
-        const bool isHeld = static_cast<std::size_t>(std::floor((static_cast<double>(i) + 1) * nHeld / static_cast<double>(n))) >
-                            static_cast<std::size_t>(std::floor(static_cast<double>(i) * nHeld / static_cast<double>(n)));
+        const bool isHeld =
+            static_cast<std::size_t>(
+                std::floor((static_cast<double>(i) + 1) * nHeld / static_cast<double>(n))) >
+            static_cast<std::size_t>(std::floor(static_cast<double>(i) * nHeld / static_cast<double>(n)));
         Half& h = isHeld ? held_ : cal_;
         const auto& sp = specimens[i];
         h.ids.push_back(sp.id);
@@ -177,9 +195,10 @@ void Analysis::splitMeasurements()
             std::string why;
             const auto c = curveFeatures(sp.curve->displacement, sp.curve->force, &why);
             if (!c)
-                throw UserError(sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
-                                "; explainGap compares curves up to and past the failure: give the whole curve "
-                                "to the load drop, or leave out every curve to compare failure loads only");
+                throw UserError(
+                    sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
+                    "; explainGap compares curves up to and past the failure: give the whole curve "
+                    "to the load drop, or leave out every curve to compare failure loads only");
             (isHeld ? heldCurves : calCurves).push_back(*c);
             h.loads.push_back(c->peakForce);
             h.displacement.push_back(sp.curve->displacement);
@@ -209,9 +228,9 @@ void Analysis::readBaselineValues()
         const Dictionary d = Dictionary::readFile(s_.targetCase / b.where.file);
         const double v = d.getScalar(b.where.entry, Bounds::any());
         if (v < b.where.low || v > b.where.high)
-            throw UserError(s_.dictionary.string() + ": baseline parameter '" + b.where.name + "' is " + format(v) +
-                            " in the case, outside its range (" + format(b.where.low) + " " + format(b.where.high) +
-                            "); widen the range");
+            throw UserError(s_.dictionary.string() + ": baseline parameter '" + b.where.name + "' is " +
+                            format(v) + " in the case, outside its range (" + format(b.where.low) + " " +
+                            format(b.where.high) + "); widen the range");
         theta0_.push_back(v);
     }
     for (const std::string& name : s_.effects) theta0_.push_back(findEffect(name, "").neutral);
@@ -226,18 +245,22 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
     // more than 4/3 of 0.6), so the sensitivities learn from every point on the way.
     const int n = static_cast<int>(free.size());
     Eigen::VectorXd scale(n);
-    for (int k = 0; k < n; ++k) scale[k] = std::max(std::fabs(probeSize_[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])]), 1e-300);
+    for (int k = 0; k < n; ++k)
+        scale[k] = std::max(
+            std::fabs(probeSize_[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])]), 1e-300);
     Eigen::MatrixXd A = whitened(free) * scale.asDiagonal();
     auto coordinates = [&](const Fit& f) {
         Eigen::VectorXd x(n);
-        for (int k = 0; k < n; ++k) x[k] = f.values[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] / scale[k];
+        for (int k = 0; k < n; ++k)
+            x[k] = f.values[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] / scale[k];
         return x;
     };
     auto broyden = [&](const Fit& from, const Fit& to) {
         const Eigen::VectorXd dx = coordinates(to) - coordinates(from);
         const double dxdx = dx.squaredNorm();
         if (dxdx <= 0) return;
-        const Eigen::VectorXd dm = residual(from.model, cal_, sigmaCal_) - residual(to.model, cal_, sigmaCal_);
+        const Eigen::VectorXd dm =
+            residual(from.model, cal_, sigmaCal_) - residual(to.model, cal_, sigmaCal_);
         A += (dm - A * dx) * dx.transpose() / dxdx;
     };
     if (previous) broyden(*previous, start);
@@ -246,7 +269,8 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
     for (int iteration = 1; iteration <= 3 && worse < 2; ++iteration) {
         const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, cal_, sigmaCal_));
         std::vector<double> next = best.values;
-        for (int k = 0; k < n; ++k) next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
+        for (int k = 0; k < n; ++k)
+            next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
         next = clip(next);
         bool moves = false;
         for (int k = 0; k < n; ++k) {
@@ -259,7 +283,8 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
         try {
             trial.runs = evaluate(next, label + "-" + std::to_string(iteration));
         } catch (const UserError& error) {
-            say("  " + label + ": step " + std::to_string(iteration) + " not taken, its runs failed: " + error.what());
+            say("  " + label + ": step " + std::to_string(iteration) +
+                " not taken, its runs failed: " + error.what());
             break;
         }
         trial.model = trial.runs.summary();
@@ -281,10 +306,11 @@ ExplainOutcome Analysis::execute()
 {
     ExplainOutcome out;
     readBaselineValues();
-    say(std::to_string(s_.measurements.specimens.size()) + " specimens in " + s_.measurementsFile.string() + " (" +
-        std::to_string(cal_.ids.size()) + " to fit, " + std::to_string(held_.ids.size()) + " held out), " +
-        (curves_ ? "with curves" : "failure loads only") + "; model case " + s_.targetCase.string() + ", " +
-        std::to_string(s_.seeds.values.size()) + " Voronoi seeds per evaluation");
+    say(std::to_string(s_.measurements.specimens.size()) + " specimens in " + s_.measurementsFile.string() +
+        " (" + std::to_string(cal_.ids.size()) + " to fit, " + std::to_string(held_.ids.size()) +
+        " held out), " + (curves_ ? "with curves" : "failure loads only") + "; model case " +
+        s_.targetCase.string() + ", " + std::to_string(s_.seeds.values.size()) +
+        " Voronoi seeds per evaluation");
     std::string features;
     for (int f : obs_) features += std::string(features.empty() ? "" : ", ") + featureName(f);
     say("features compared: " + features);
@@ -293,8 +319,10 @@ ExplainOutcome Analysis::execute()
     std::ostringstream body;
     for (const std::string& name : s_.effects) {
         const EffectDescriptor& d = findEffect(name, "");
-        body << name << "\n{\n    " << d.parameter << " " << formatNumber(d.neutral) << ";   // neutral: off\n";
-        for (const auto& [entry, value] : s_.effectFixed[name]) body << "    " << entry << " " << value << ";\n";
+        body << name << "\n{\n    " << d.parameter << " " << formatNumber(d.neutral)
+             << ";   // neutral: off\n";
+        for (const auto& [entry, value] : s_.effectFixed[name])
+            body << "    " << entry << " " << value << ";\n";
         body << "}\n";
     }
     writeTemplateEffects(run_, body.str());
@@ -372,16 +400,20 @@ ExplainOutcome Analysis::execute()
     out.baselinePValue = chiSquareSurvival(baseline.chi, dof);
     out.baselineHeldOutGap = heldGap(baseline.model);
     std::string fitted;
-    for (int j = 0; j < nb_; ++j) fitted += (j ? ", " : "") + describeParameter(j, baseline.values[static_cast<std::size_t>(j)]);
+    for (int j = 0; j < nb_; ++j)
+        fitted += (j ? ", " : "") + describeParameter(j, baseline.values[static_cast<std::size_t>(j)]);
     if (nb_ == 0) fitted = "no baseline parameter free: the case as calibrated";
-    say(std::string(nb_ > 0 ? "baseline re-fitted (" : "baseline (") + fitted + "): chi-square " + format(baseline.chi) + " on " + std::to_string(dof) +
+    say(std::string(nb_ > 0 ? "baseline re-fitted (" : "baseline (") + fitted + "): chi-square " +
+        format(baseline.chi) + " on " + std::to_string(dof) +
         " degrees of freedom, p = " + format(out.baselinePValue, 3) + "; held-out gap " +
         format(out.baselineHeldOutGap, 3) + " (RMS of the feature errors in standard errors)");
 
     // 4. Score test of every effect at the re-fitted baseline.
     const Eigen::MatrixXd A = whitened(baselineFree);
     Eigen::MatrixXd projector = Eigen::MatrixXd::Identity(A.rows(), A.rows());
-    if (nb_ > 0) projector -= A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
+    if (nb_ > 0)
+        projector -=
+            A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
     const Eigen::VectorXd r = residual(baseline.model, cal_, sigmaCal_);
     std::vector<Eigen::VectorXd> projected;
     for (int e = 0; e < ne_; ++e) {
@@ -404,7 +436,8 @@ ExplainOutcome Analysis::execute()
     std::vector<int> order(static_cast<std::size_t>(ne_));
     for (int e = 0; e < ne_; ++e) order[static_cast<std::size_t>(e)] = e;
     std::sort(order.begin(), order.end(), [&](int a, int b) {
-        return out.screened[static_cast<std::size_t>(a)].score > out.screened[static_cast<std::size_t>(b)].score;
+        return out.screened[static_cast<std::size_t>(a)].score >
+               out.screened[static_cast<std::size_t>(b)].score;
     });
     for (int e : order) {
         const auto& se = out.screened[static_cast<std::size_t>(e)];
@@ -413,8 +446,12 @@ ExplainOutcome Analysis::execute()
             findEffect(se.name, "").parameter + " change " + format(se.amplitude, 3));
     }
     auto cosine = [&](int a, int b) {
-        const double na = projected[static_cast<std::size_t>(a)].norm(), nb = projected[static_cast<std::size_t>(b)].norm();
-        return na > 0 && nb > 0 ? projected[static_cast<std::size_t>(a)].dot(projected[static_cast<std::size_t>(b)]) / (na * nb) : 0.0;
+        const double na = projected[static_cast<std::size_t>(a)].norm(),
+                     nb = projected[static_cast<std::size_t>(b)].norm();
+        return na > 0 && nb > 0
+                   ? projected[static_cast<std::size_t>(a)].dot(projected[static_cast<std::size_t>(b)]) /
+                         (na * nb)
+                   : 0.0;
     };
 
     // The gap exceeds the scatter when the omnibus test rejects, or when one effect's
@@ -437,13 +474,15 @@ ExplainOutcome Analysis::execute()
     int bestEffect = -1;
     if (!gapBeyondScatter) {
         out.verdict = Verdict::noGapBeyondScatter;
-        out.sentence = "explainGap: no missing effect is needed: the baseline, re-fitted (" + fitted +
-                       "), is within the model's own scatter (chi-square p = " + format(out.baselinePValue, 3) + ").";
+        out.sentence =
+            "explainGap: no missing effect is needed: the baseline, re-fitted (" + fitted +
+            "), is within the model's own scatter (chi-square p = " + format(out.baselinePValue, 3) + ").";
     } else {
         // 5. Confirm the significant candidates by a joint refit, judged on the held-out half.
         std::vector<int> candidates;
         for (int e : order)
-            if (out.screened[static_cast<std::size_t>(e)].pValue < s_.significance && !out.screened[static_cast<std::size_t>(e)].wrongSign)
+            if (out.screened[static_cast<std::size_t>(e)].pValue < s_.significance &&
+                !out.screened[static_cast<std::size_t>(e)].wrongSign)
                 candidates.push_back(e);
         if (candidates.size() > 3) candidates.resize(3);
         const double aicBaseline = baseline.chi + 2.0 * nb_;
@@ -471,41 +510,49 @@ ExplainOutcome Analysis::execute()
             se.confirmed = true;
             se.value = fit.values[static_cast<std::size_t>(nb_ + e)];
             const double sd = std::sqrt(std::max(0.0, fit.covariance(nb_, nb_)));
-            se.intervalLow = std::max(run_.parameters[static_cast<std::size_t>(nb_ + e)].low, se.value - 1.645 * sd);
-            se.intervalHigh = std::min(run_.parameters[static_cast<std::size_t>(nb_ + e)].high, se.value + 1.645 * sd);
+            se.intervalLow =
+                std::max(run_.parameters[static_cast<std::size_t>(nb_ + e)].low, se.value - 1.645 * sd);
+            se.intervalHigh =
+                std::min(run_.parameters[static_cast<std::size_t>(nb_ + e)].high, se.value + 1.645 * sd);
             se.heldOutGap = heldGap(fit.model);
             se.reduction = out.baselineHeldOutGap > 0 ? 1.0 - se.heldOutGap / out.baselineHeldOutGap : 0.0;
             se.aic = fit.chi + 2.0 * (nb_ + 1);
             se.kept = se.reduction >= s_.minimumGapReduction && se.aic < aicBaseline;
-            say("  refit " + se.name + ": " + describeParameter(nb_ + e, se.value) + " (90 % " + format(se.intervalLow, 3) +
-                " to " + format(se.intervalHigh, 3) + "), chi-square " + format(fit.chi, 3) + ", held-out gap " +
-                format(se.heldOutGap, 3) + " (" + format(100 * se.reduction, 3) + " %), AIC " + format(se.aic, 4) +
-                " vs " + format(aicBaseline, 4) + (se.kept ? ": kept" : ": not kept"));
+            say("  refit " + se.name + ": " + describeParameter(nb_ + e, se.value) + " (90 % " +
+                format(se.intervalLow, 3) + " to " + format(se.intervalHigh, 3) + "), chi-square " +
+                format(fit.chi, 3) + ", held-out gap " + format(se.heldOutGap, 3) + " (" +
+                format(100 * se.reduction, 3) + " %), AIC " + format(se.aic, 4) + " vs " +
+                format(aicBaseline, 4) + (se.kept ? ": kept" : ": not kept"));
             fits[static_cast<std::size_t>(e)] = std::move(fit);
         }
         std::vector<int> kept;
         for (int e : candidates)
             if (out.screened[static_cast<std::size_t>(e)].kept) kept.push_back(e);
         std::sort(kept.begin(), kept.end(), [&](int a, int b) {
-            return out.screened[static_cast<std::size_t>(a)].reduction > out.screened[static_cast<std::size_t>(b)].reduction;
+            return out.screened[static_cast<std::size_t>(a)].reduction >
+                   out.screened[static_cast<std::size_t>(b)].reduction;
         });
         if (kept.empty()) {
             out.verdict = Verdict::unexplained;
-            out.sentence = "explainGap: the gap exceeds the model's scatter (p = " + format(out.baselinePValue, 3) +
-                           ") but no effect of the library closes it on the held-out specimens by " +
-                           format(100 * s_.minimumGapReduction, 3) + " %; the model misses something else.";
+            out.sentence =
+                "explainGap: the gap exceeds the model's scatter (p = " + format(out.baselinePValue, 3) +
+                ") but no effect of the library closes it on the held-out specimens by " +
+                format(100 * s_.minimumGapReduction, 3) + " %; the model misses something else.";
         } else {
             const int top = kept.front();
             std::vector<int> twins;
             for (int e : kept)
                 if (e != top && std::fabs(cosine(top, e)) >= s_.indistinguishableCosine &&
-                    out.screened[static_cast<std::size_t>(e)].aic - out.screened[static_cast<std::size_t>(top)].aic < 2.0)
+                    out.screened[static_cast<std::size_t>(e)].aic -
+                            out.screened[static_cast<std::size_t>(top)].aic <
+                        2.0)
                     twins.push_back(e);
             const ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
             if (!twins.empty()) {
                 out.verdict = Verdict::indistinguishable;
                 out.alternatives.push_back(t.name);
-                for (int e : twins) out.alternatives.push_back(out.screened[static_cast<std::size_t>(e)].name);
+                for (int e : twins)
+                    out.alternatives.push_back(out.screened[static_cast<std::size_t>(e)].name);
                 // Which unobserved feature would separate the top two (model sensitivities on every
                 // feature, scaled by the model's scatter, with the baseline projected out)?
                 auto fullDirection = [&](int e) {
@@ -518,7 +565,8 @@ ExplainOutcome Analysis::execute()
                     const Eigen::MatrixXd B = full.leftCols(nb_);
                     Eigen::VectorXd c = full.col(nb_);
                     if (nb_ > 0)
-                        c -= B * (B.transpose() * B).completeOrthogonalDecomposition().pseudoInverse() * (B.transpose() * c);
+                        c -= B * (B.transpose() * B).completeOrthogonalDecomposition().pseudoInverse() *
+                             (B.transpose() * c);
                     const double n = c.norm();
                     return n > 0 ? Eigen::VectorXd(c / n) : c;
                 };
@@ -531,27 +579,31 @@ ExplainOutcome Analysis::execute()
                     if (std::fabs(u[f] - v[f]) > largest) largest = std::fabs(u[f] - v[f]), separating = f;
                 }
                 out.separatingMeasurement =
-                    separating >= 0 ? std::string(measurementFor(separating))
-                                    : "no measurement of this test separates them; a test of another geometry "
-                                      "(e.g. single particle breakage of irregular rocks) may";
+                    separating >= 0
+                        ? std::string(measurementFor(separating))
+                        : "no measurement of this test separates them; a test of another geometry "
+                          "(e.g. single particle breakage of irregular rocks) may";
                 std::string names;
                 for (std::size_t i = 0; i < out.alternatives.size(); ++i)
-                    names += (i ? (i + 1 == out.alternatives.size() ? " or " : ", ") : "") + out.alternatives[i];
-                out.sentence = "explainGap: the gap is real (p = " + format(out.baselinePValue, 3) + ") and " + names +
-                               " explain it equally well (held-out gap -" + format(100 * t.reduction, 3) +
-                               " % for " + t.name + "); the data cannot tell them apart: " +
-                               out.separatingMeasurement + " would. No augmented case is written.";
+                    names +=
+                        (i ? (i + 1 == out.alternatives.size() ? " or " : ", ") : "") + out.alternatives[i];
+                out.sentence = "explainGap: the gap is real (p = " + format(out.baselinePValue, 3) +
+                               ") and " + names + " explain it equally well (held-out gap -" +
+                               format(100 * t.reduction, 3) + " % for " + t.name +
+                               "); the data cannot tell them apart: " + out.separatingMeasurement +
+                               " would. No augmented case is written.";
             } else {
                 out.verdict = Verdict::explained;
                 out.effect = t.name;
                 bestEffect = top;
                 bestFit = fits[static_cast<std::size_t>(top)];
                 const EffectDescriptor& d = findEffect(t.name, "");
-                out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics + "): " + d.parameter +
-                               " = " + format(t.value, 3) + " " + d.unit + " (90 % interval " + format(t.intervalLow, 3) +
-                               " to " + format(t.intervalHigh, 3) + "); the held-out gap falls by " +
-                               format(100 * t.reduction, 3) + " % (from " + format(out.baselineHeldOutGap, 3) + " to " +
-                               format(t.heldOutGap, 3) + ").";
+                out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics +
+                               "): " + d.parameter + " = " + format(t.value, 3) + " " + d.unit +
+                               " (90 % interval " + format(t.intervalLow, 3) + " to " +
+                               format(t.intervalHigh, 3) + "); the held-out gap falls by " +
+                               format(100 * t.reduction, 3) + " % (from " +
+                               format(out.baselineHeldOutGap, 3) + " to " + format(t.heldOutGap, 3) + ").";
             }
         }
     }
@@ -561,23 +613,27 @@ ExplainOutcome Analysis::execute()
     return out;
 }
 
-void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, const Fit* effect, int effectIndex)
+void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, const Fit* effect,
+                            int effectIndex)
 {
     const fs::path dir = s_.directory;
     // Gap table: every observed feature, measured and simulated, before and after.
     stats::TextTable table;
-    table.names = {"feature", "measuredFit", "baseline", "withEffect", "zFitBefore", "zFitAfter", "measuredHeldOut",
-                   "zHeldOutBefore", "zHeldOutAfter"};
+    table.names = {"feature",   "measuredFit",     "baseline",       "withEffect",   "zFitBefore",
+                   "zFitAfter", "measuredHeldOut", "zHeldOutBefore", "zHeldOutAfter"};
     table.units = {"-", "SI", "SI", "SI", "-", "-", "SI", "-", "-"};
     const FeatureSummary& after = effect ? effect->model : baseline.model;
-    const Eigen::VectorXd zb = residual(baseline.model, cal_, sigmaCal_), za = residual(after, cal_, sigmaCal_);
-    const Eigen::VectorXd hb = residual(baseline.model, held_, sigmaHeld_), ha = residual(after, held_, sigmaHeld_);
+    const Eigen::VectorXd zb = residual(baseline.model, cal_, sigmaCal_),
+                          za = residual(after, cal_, sigmaCal_);
+    const Eigen::VectorXd hb = residual(baseline.model, held_, sigmaHeld_),
+                          ha = residual(after, held_, sigmaHeld_);
     for (std::size_t i = 0; i < obs_.size(); ++i) {
         const int f = obs_[i];
         const int k = static_cast<int>(i);
-        table.rows.push_back({std::string(featureName(f)) + "[" + featureUnit(f) + "]", format(cal_.features.value[f], 6),
-                              format(baseline.model.value[f], 6), format(after.value[f], 6), format(zb[k], 3),
-                              format(za[k], 3), format(held_.features.value[f], 6), format(hb[k], 3), format(ha[k], 3)});
+        table.rows.push_back({std::string(featureName(f)) + "[" + featureUnit(f) + "]",
+                              format(cal_.features.value[f], 6), format(baseline.model.value[f], 6),
+                              format(after.value[f], 6), format(zb[k], 3), format(za[k], 3),
+                              format(held_.features.value[f], 6), format(hb[k], 3), format(ha[k], 3)});
     }
     stats::writeTextTable(dir / "gapTable.dat", table);
 
@@ -591,27 +647,32 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     metrics.names = {"metric", "baseline", "withEffect"};
     metrics.units = {"-", "-", "-"};
     const PointRuns& afterRuns = effect ? effect->runs : baseline.runs;
-    metrics.rows.push_back({"KS_failureLoads", format(stats::kolmogorovSmirnov(held_.loads, peaks(baseline.runs)), 3),
+    metrics.rows.push_back({"KS_failureLoads",
+                            format(stats::kolmogorovSmirnov(held_.loads, peaks(baseline.runs)), 3),
                             format(stats::kolmogorovSmirnov(held_.loads, peaks(afterRuns)), 3)});
-    metrics.rows.push_back({"W1_failureLoads[N]", format(stats::wasserstein1(held_.loads, peaks(baseline.runs)), 4),
+    metrics.rows.push_back({"W1_failureLoads[N]",
+                            format(stats::wasserstein1(held_.loads, peaks(baseline.runs)), 4),
                             format(stats::wasserstein1(held_.loads, peaks(afterRuns)), 4)});
     auto relative = [&](const FeatureSummary& m, int f) {
         return format(100 * (m.value[f] - held_.features.value[f]) / held_.features.value[f], 3);
     };
-    metrics.rows.push_back({"peakForceError[%]", relative(baseline.model, peakForce), relative(after, peakForce)});
+    metrics.rows.push_back(
+        {"peakForceError[%]", relative(baseline.model, peakForce), relative(after, peakForce)});
     if (curves_) {
         metrics.rows.push_back({"peakDisplacementError[%]", relative(baseline.model, peakDisplacement),
                                 relative(after, peakDisplacement)});
         metrics.rows.push_back({"secantStiffnessError[%]", relative(baseline.model, secantStiffness),
                                 relative(after, secantStiffness)});
-        metrics.rows.push_back({"toeIndexDifference", format(baseline.model.value[toeIndex] - held_.features.value[toeIndex], 3),
+        metrics.rows.push_back({"toeIndexDifference",
+                                format(baseline.model.value[toeIndex] - held_.features.value[toeIndex], 3),
                                 format(after.value[toeIndex] - held_.features.value[toeIndex], 3)});
         const double upTo = held_.features.value[peakDisplacement];
         const auto measured = meanCurve(held_.displacement, held_.force, upTo, 50);
         auto nrms = [&](const PointRuns& runs) {
             const auto sim = meanCurve(runs.displacement, runs.force, upTo, 50);
             double sum = 0;
-            for (std::size_t i = 0; i < sim.size(); ++i) sum += (sim[i] - measured[i]) * (sim[i] - measured[i]);
+            for (std::size_t i = 0; i < sim.size(); ++i)
+                sum += (sim[i] - measured[i]) * (sim[i] - measured[i]);
             return std::sqrt(sum / static_cast<double>(sim.size())) / held_.features.value[peakForce];
         };
         metrics.rows.push_back({"curveNRMS", format(nrms(baseline.runs), 3), format(nrms(afterRuns), 3)});
@@ -620,15 +681,16 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
 
     // Screening table.
     stats::TextTable screen;
-    screen.names = {"effect", "score", "p", "linearisedChange", "refitted", "value", "low90", "high90",
-                    "heldOutGap", "reduction", "AIC", "kept"};
+    screen.names = {"effect", "score",  "p",          "linearisedChange", "refitted", "value",
+                    "low90",  "high90", "heldOutGap", "reduction",        "AIC",      "kept"};
     screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
     for (const auto& se : out.screened)
-        screen.rows.push_back({se.name, format(se.score, 4), format(se.pValue, 3), format(se.amplitude, 4),
-                               se.confirmed ? "yes" : "no", se.confirmed ? format(se.value, 4) : "-",
-                               se.confirmed ? format(se.intervalLow, 4) : "-", se.confirmed ? format(se.intervalHigh, 4) : "-",
-                               se.confirmed ? format(se.heldOutGap, 3) : "-", se.confirmed ? format(se.reduction, 3) : "-",
-                               se.confirmed ? format(se.aic, 4) : "-", se.kept ? "yes" : "no"});
+        screen.rows.push_back(
+            {se.name, format(se.score, 4), format(se.pValue, 3), format(se.amplitude, 4),
+             se.confirmed ? "yes" : "no", se.confirmed ? format(se.value, 4) : "-",
+             se.confirmed ? format(se.intervalLow, 4) : "-", se.confirmed ? format(se.intervalHigh, 4) : "-",
+             se.confirmed ? format(se.heldOutGap, 3) : "-", se.confirmed ? format(se.reduction, 3) : "-",
+             se.confirmed ? format(se.aic, 4) : "-", se.kept ? "yes" : "no"});
     stats::writeTextTable(dir / "screening.dat", screen);
 
     // Machine-readable result (tests and scripts read it).
@@ -644,9 +706,9 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
           << "baselineHeldOutGap " << format(out.baselineHeldOutGap, 6) << ";\n";
         if (effectIndex >= 0) {
             const auto& se = out.screened[static_cast<std::size_t>(effectIndex)];
-            o << "value              " << format(se.value, 6) << ";\ninterval           (" << format(se.intervalLow, 6)
-              << " " << format(se.intervalHigh, 6) << ");\nheldOutGap         " << format(se.heldOutGap, 6)
-              << ";\nreduction          " << format(se.reduction, 6) << ";\n";
+            o << "value              " << format(se.value, 6) << ";\ninterval           ("
+              << format(se.intervalLow, 6) << " " << format(se.intervalHigh, 6) << ");\nheldOutGap         "
+              << format(se.heldOutGap, 6) << ";\nreduction          " << format(se.reduction, 6) << ";\n";
         }
         o << "simulations        " << out.simulations << ";\n";
     });
@@ -663,7 +725,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
             fs::copy(s_.targetCase / sub, augmented / sub, fs::copy_options::recursive);
         for (int j = 0; j < nb_; ++j) {
             const auto& b = s_.baseline[static_cast<std::size_t>(j)];
-            setEntryInFile(augmented / b.where.file, b.where.entry, formatNumber(effect->values[static_cast<std::size_t>(j)]));
+            setEntryInFile(augmented / b.where.file, b.where.entry,
+                           formatNumber(effect->values[static_cast<std::size_t>(j)]));
         }
         for (const auto& t : s_.tied)
             setEntryInFile(augmented / t.file, t.entry, formatNumber(t.factor * effect->values[t.parameter]));
@@ -671,11 +734,13 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
         const EffectDescriptor& d = findEffect(name, "");
         writeFileAtomically(augmented / "constant/modelEffects", [&](std::ostream& o) {
             o << "FoamFile { format ascii; class dictionary; object modelEffects; }\n\n"
-              << "// Written by explainGap (" << s_.directory.filename().string() << "): " << d.physics << ".\n"
+              << "// Written by explainGap (" << s_.directory.filename().string() << "): " << d.physics
+              << ".\n"
               << "// " << out.sentence << "\n"
-              << name << "\n{\n    " << d.parameter << " " << formatNumber(effect->values[static_cast<std::size_t>(nb_ + effectIndex)])
-              << ";\n";
-            for (const auto& [entry, value] : s_.effectFixed[name]) o << "    " << entry << " " << value << ";\n";
+              << name << "\n{\n    " << d.parameter << " "
+              << formatNumber(effect->values[static_cast<std::size_t>(nb_ + effectIndex)]) << ";\n";
+            for (const auto& [entry, value] : s_.effectFixed[name])
+                o << "    " << entry << " " << value << ";\n";
             o << "}\n";
         });
     }
@@ -690,12 +755,15 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
         }
         std::ostringstream g;
         g << stats::gnuplotDataBlock("z", rows) << "set title "
-          << stats::gnuplotString("Held-out specimens: feature error in standard errors (measured - simulated)")
-          << "\nset style data histogram\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-          << "set xtics (" << labels << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
-          << "plot $z using 2 title \"baseline re-fitted\" " << stats::seriesColour(0) << ", $z using 3 title "
-          << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << " "
-          << stats::seriesColour(1) << "\n";
+          << stats::gnuplotString(
+                 "Held-out specimens: feature error in standard errors (measured - simulated)")
+          << "\nset style data histogram\nset style histogram clustered gap 1\nset style fill solid 0.8 "
+             "border -1\n"
+          << "set xtics (" << labels
+          << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
+          << "plot $z using 2 title \"baseline re-fitted\" " << stats::seriesColour(0)
+          << ", $z using 3 title " << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)")
+          << " " << stats::seriesColour(1) << "\n";
         stats::renderPng(g.str(), dir / "residuals.png", 900, 600);
         if (curves_) {
             const double upTo = 1.6 * held_.features.value[peakDisplacement];
@@ -706,13 +774,18 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
             std::vector<std::vector<double>> c;
             for (int i = 0; i < n; ++i)
                 c.push_back({1e3 * upTo * i / (n - 1), 1e-3 * measured[static_cast<std::size_t>(i)],
-                             1e-3 * before[static_cast<std::size_t>(i)], 1e-3 * withEffect[static_cast<std::size_t>(i)]});
+                             1e-3 * before[static_cast<std::size_t>(i)],
+                             1e-3 * withEffect[static_cast<std::size_t>(i)]});
             std::ostringstream p;
             p << stats::gnuplotDataBlock("c", c) << "set title "
-              << stats::gnuplotString("Mean force-displacement curves, held-out specimens (aligned at contact onset)")
-              << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset grid\n"
-              << stats::legendBelowPlot(3) << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
-              << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0) << " title \"baseline re-fitted\", "
+              << stats::gnuplotString(
+                     "Mean force-displacement curves, held-out specimens (aligned at contact onset)")
+              << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset "
+                 "grid\n"
+              << stats::legendBelowPlot(3)
+              << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
+              << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0)
+              << " title \"baseline re-fitted\", "
               << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
               << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
             stats::renderPng(p.str(), dir / "curves.png", 900, 650);

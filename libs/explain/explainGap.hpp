@@ -22,12 +22,12 @@ const char* verdictName(Verdict v);
 
 struct ScreenedEffect {
     std::string name;
-    double score = 0.0;       // chi-square reduction of the linearised fit
+    double score = 0.0;  // chi-square reduction of the linearised fit
     double pValue = 1.0;
-    double amplitude = 0.0;   // linearised estimate of the parameter change
-    bool wrongSign = false;   // the data want it outside its physical bounds
-    bool confirmed = false;   // refit ran
-    double value = 0.0;       // refitted parameter
+    double amplitude = 0.0;                        // linearised estimate of the parameter change
+    bool wrongSign = false;                        // the data want it outside its physical bounds
+    bool confirmed = false;                        // refit ran
+    double value = 0.0;                            // refitted parameter
     double intervalLow = 0.0, intervalHigh = 0.0;  // 90 % (linearised)
     double heldOutGap = 0.0;  // RMS of the normalised held-out feature errors after the refit
     double reduction = 0.0;   // 1 - heldOutGap / baseline's
@@ -38,9 +38,9 @@ struct ScreenedEffect {
 struct ExplainOutcome {
     Verdict verdict = Verdict::noGapBeyondScatter;
     std::string sentence;
-    std::string effect;                    // explained: the effect
+    std::string effect;                     // explained: the effect
     std::vector<std::string> alternatives;  // indistinguishable: the effects
-    std::string separatingMeasurement;     // indistinguishable: what would separate them
+    std::string separatingMeasurement;      // indistinguishable: what would separate them
     double baselineChiSquare = 0.0, baselinePValue = 1.0;
     double baselineHeldOutGap = 0.0;
     std::vector<ScreenedEffect> screened;

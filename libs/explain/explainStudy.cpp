@@ -3,10 +3,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/textFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/textFile.hpp"
 #include "effects/modelEffect.hpp"
 #include "explain/responseFeatures.hpp"
 
@@ -36,7 +36,8 @@ calibration::SeedList readSeeds(const Dictionary& dict, const fs::path& caseDir,
                                 const std::string& why)
 {
     if (!dict.isDict("seeds"))
-        throw UserError(dict.fileName() + ": 'seeds { file system/voronoiMeshDict; entry seed; values (1 2 3 4); }' " +
+        throw UserError(dict.fileName() +
+                        ": 'seeds { file system/voronoiMeshDict; entry seed; values (1 2 3 4); }' " +
                         "is required: " + why);
     const Dictionary& s = dict.subDict("seeds");
     calibration::SeedList seeds;
@@ -114,8 +115,9 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     s.directory = studyDirectory;
     s.dictionary = studyDirectory / "system/explainGapDict";
     if (!fs::is_regular_file(s.dictionary))
-        throw UserError("missing '" + s.dictionary.string() +
-                        "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
+        throw UserError(
+            "missing '" + s.dictionary.string() +
+            "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
     s.targetCase = existingCase(dict, studyDirectory);
     s.measurementsFile = caseRelative(dict, studyDirectory, "measurements");
@@ -124,15 +126,18 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
                         s.measurementsFile.string() + "'");
     s.measurements = stats::readMeasurements(s.measurementsFile);
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
-    s.simulations = dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
-    s.seeds = readSeeds(dict, s.targetCase, 2,
-                        "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
+    s.simulations =
+        dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
+    s.seeds =
+        readSeeds(dict, s.targetCase, 2,
+                  "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
 
     if (!dict.isDict("baseline"))
-        throw UserError(dict.fileName() +
-                        ": 'baseline { tensileStrength { entry bond/tensileStrength; range (10e6 60e6); } }' is "
-                        "required: the parameters calibrated as usual, re-fitted with each candidate effect "
-                        "('baseline { }' tests the case as it is calibrated)");
+        throw UserError(
+            dict.fileName() +
+            ": 'baseline { tensileStrength { entry bond/tensileStrength; range (10e6 60e6); } }' is "
+            "required: the parameters calibrated as usual, re-fitted with each candidate effect "
+            "('baseline { }' tests the case as it is calibrated)");
     for (const Entry& e : dict.subDict("baseline").entries()) {
         if (!e.isDict())
             throw UserError(e.keywordLocation.str() + ": baseline parameter '" + e.keyword +
@@ -151,8 +156,8 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         b.relativeStep = d.getScalarOrDefault("relativeStep", 0.1, Bounds::open(0, 1));
         const fs::path file = s.targetCase / b.where.file;
         if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), b.where.entry, file.string()))
-            throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry + "' in '" +
-                            file.string() + "'");
+            throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry +
+                            "' in '" + file.string() + "'");
         s.baseline.push_back(b);
     }
     if (dict.isDict("tied"))
@@ -175,17 +180,20 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 
     s.effects = dict.get<std::vector<std::string>>("effects");
     if (s.effects.empty())
-        throw UserError(dict.location("effects").str() + ": no candidate effects; name some of the library's");
+        throw UserError(dict.location("effects").str() +
+                        ": no candidate effects; name some of the library's");
     const Dictionary* settings = dict.isDict("effectSettings") ? &dict.subDict("effectSettings") : nullptr;
     for (const std::string& name : s.effects) {
         const EffectDescriptor& d = findEffect(name, dict.location("effects").str());
         for (const std::string& fixed : d.fixedEntries) {
             const std::string key = name + "/" + fixed;
             if (!settings || !settings->found(key))
-                throw UserError(dict.fileName() + ": effectSettings/" + key + " is missing: effect '" + name +
-                                "' needs '" + fixed + "' (docs/explainGap.md lists what each effect needs, e.g. "
-                                "contactCrumbling depth: about one cell size in m; seatingOffset closureForce: "
-                                "about 10 % of the failure load in N; bondStrengthScatter seed: a whole number)");
+                throw UserError(
+                    dict.fileName() + ": effectSettings/" + key + " is missing: effect '" + name +
+                    "' needs '" + fixed +
+                    "' (docs/explainGap.md lists what each effect needs, e.g. "
+                    "contactCrumbling depth: about one cell size in m; seatingOffset closureForce: "
+                    "about 10 % of the failure load in N; bondStrengthScatter seed: a whole number)");
             s.effectFixed[name][fixed] = valueText(settings->entry(key));
         }
     }
@@ -193,9 +201,10 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         for (const std::string& f : dict.get<std::vector<std::string>>("features")) {
             const int index = featureIndex(f);
             if (index < 0)
-                throw UserError(dict.location("features").str() + ": unknown feature '" + f +
-                                "'; known: peakForce peakForceSpread peakDisplacement secantStiffness toeIndex "
-                                "softening");
+                throw UserError(
+                    dict.location("features").str() + ": unknown feature '" + f +
+                    "'; known: peakForce peakForceSpread peakDisplacement secantStiffness toeIndex "
+                    "softening");
             s.requestedFeatures.push_back(index);
         }
     }

@@ -31,9 +31,9 @@ struct ExplainStudy {
     calibration::SeedList seeds;  // the model's own scatter: every evaluation runs every seed
     std::vector<BaselineParameter> baseline;
     std::vector<calibration::TiedEntry> tied;
-    std::vector<std::string> effects;                                      // names from the library
+    std::vector<std::string> effects;                                       // names from the library
     std::map<std::string, std::map<std::string, std::string>> effectFixed;  // effect -> entry -> value
-    std::vector<int> requestedFeatures;                                    // empty: every available one
+    std::vector<int> requestedFeatures;                                     // empty: every available one
     std::filesystem::path responseFile = "postProcessing/plateForce/0/plateForce.dat";
     std::string forceColumn = "force", displacementColumn = "gapChange";
     double heldOutFraction = 0.5;
@@ -53,7 +53,7 @@ struct TwinStudy {
     std::filesystem::path directory, dictionary, targetCase;
     std::string prepareCommand, command;
     int jobs = 1;
-    calibration::SeedList seeds;  // one specimen per seed
+    calibration::SeedList seeds;    // one specimen per seed
     std::string hiddenEffectsText;  // the body of constant/modelEffects ("" = none)
     std::vector<std::string> hiddenEffects;
     double forceNoise = 0.0;         // relative standard deviation of each force sample [-]

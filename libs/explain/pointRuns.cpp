@@ -29,12 +29,13 @@ void writeTemplateEffects(const calibration::CalibrationStudy& study, const std:
 }
 
 PointRuns runPoint(const calibration::CalibrationStudy& study, const std::vector<double>& values,
-                   const std::string& label, const std::string& displacementColumn, const std::string& forceColumn)
+                   const std::string& label, const std::string& displacementColumn,
+                   const std::string& forceColumn)
 {
     std::string key;
     for (double v : values) key += calibration::valueText(v) + " ";
     char hash[20];
-    std::snprintf(hash, sizeof(hash), "%08zx", std::hash<std::string>{}(key) & 0xffffffffu);
+    std::snprintf(hash, sizeof(hash), "%08zx", std::hash<std::string>{}(key)&0xffffffffu);
     calibration::RunSet set;
     set.directory = study.runsDirectory() / (values.empty() ? label : label + "-" + hash);
     for (double v : values) set.values.push_back({calibration::valueText(v)});
@@ -68,8 +69,8 @@ PointRuns runPoint(const calibration::CalibrationStudy& study, const std::vector
         runs.features.push_back(*features);
     }
     if (runs.features.size() < 2)
-        throw UserError("only " + std::to_string(runs.features.size()) + " of " + std::to_string(members.size()) +
-                        " runs in '" + set.directory.string() +
+        throw UserError("only " + std::to_string(runs.features.size()) + " of " +
+                        std::to_string(members.size()) + " runs in '" + set.directory.string() +
                         "' gave a curve with a peak and a load drop; see their log files (a run that stops "
                         "before the drop needs a later endTime or a stop criterion in constant/loading)");
     return runs;

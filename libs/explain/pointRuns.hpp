@@ -13,7 +13,7 @@ namespace rockfrac::explain {
 
 struct PointRuns {
     std::vector<double> values;
-    std::vector<std::string> seeds;                // of the members that gave a curve
+    std::vector<std::string> seeds;                 // of the members that gave a curve
     std::vector<std::vector<double>> displacement;  // per member
     std::vector<std::vector<double>> force;
     std::vector<CurveFeatures> features;  // per member with a complete curve

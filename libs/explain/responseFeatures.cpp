@@ -71,7 +71,8 @@ std::optional<CurveFeatures> curveFeatures(const std::vector<double>& d, const s
     const auto d0 = firstCrossing(d, f, onsetFraction * fp, ip);
     const auto d30 = firstCrossing(d, f, 0.3 * fp, ip);
     const auto d70 = firstCrossing(d, f, 0.7 * fp, ip);
-    if (!d0 || !d30 || !d70 || !(*d70 > *d30) || !(*d30 >= *d0)) return fail("no rise from contact to the peak");
+    if (!d0 || !d30 || !d70 || !(*d70 > *d30) || !(*d30 >= *d0))
+        return fail("no rise from contact to the peak");
     std::optional<double> dDrop;
     for (std::size_t i = ip + 1; i < f.size(); ++i)
         if (f[i] < 0.5 * fp) {
@@ -107,10 +108,11 @@ FeatureSummary summarise(const std::vector<CurveFeatures>& curves)
     s.standardError[peakForce] = peakSd / std::sqrt(n);
     s.value[peakForceSpread] = peakSd;
     s.standardError[peakForceSpread] = n > 1 ? peakSd / std::sqrt(2.0 * (n - 1)) : peakSd;
-    const std::pair<Feature, double CurveFeatures::*> means[] = {{peakDisplacement, &CurveFeatures::peakDisplacement},
-                                                                 {secantStiffness, &CurveFeatures::secantStiffness},
-                                                                 {toeIndex, &CurveFeatures::toeIndex},
-                                                                 {softening, &CurveFeatures::softening}};
+    const std::pair<Feature, double CurveFeatures::*> means[] = {
+        {peakDisplacement, &CurveFeatures::peakDisplacement},
+        {secantStiffness, &CurveFeatures::secantStiffness},
+        {toeIndex, &CurveFeatures::toeIndex},
+        {softening, &CurveFeatures::softening}};
     for (const auto& [feature, member] : means) {
         const stats::Sample v = column(member);
         s.value[feature] = stats::mean(v);

@@ -52,8 +52,8 @@ TwinOutcome makeTwinData(const TwinStudy& s)
                 o << noisyD << "\t" << std::max(0.0, noisyF) << "\n";
             }
         });
-        specimens << "    " << id << " { curve \"curves/" << id << ".dat\"; }   // Voronoi seed " << runs.seeds[k]
-                  << "\n";
+        specimens << "    " << id << " { curve \"curves/" << id << ".dat\"; }   // Voronoi seed "
+                  << runs.seeds[k] << "\n";
     }
     const fs::path measurements = out / "measurements";
     writeFileAtomically(measurements, [&](std::ostream& o) {
@@ -62,7 +62,8 @@ TwinOutcome makeTwinData(const TwinStudy& s)
           << ": the model case\n// run on " << runs.features.size()
           << " Voronoi seeds with noise on every sample. What was hidden in it is in\n"
           << "// the study's hiddenLabel, not here: the analysis is blind.\n\n"
-          << "test        BDT;\nmaterial    " << s.material << ";\nreference   \"twin data (makeTwinData)\";\n\n"
+          << "test        BDT;\nmaterial    " << s.material
+          << ";\nreference   \"twin data (makeTwinData)\";\n\n"
           << "specimens\n{\n"
           << specimens.str() << "}\n";
     });
@@ -72,9 +73,10 @@ TwinOutcome makeTwinData(const TwinStudy& s)
           << "// What makeTwinData hid in " << measurements.string() << ".\n"
           << "hiddenEffects (";
         for (std::size_t i = 0; i < s.hiddenEffects.size(); ++i) o << (i ? " " : "") << s.hiddenEffects[i];
-        o << ");\neffects\n{\n" << s.hiddenEffectsText << "}\nforceNoise " << s.forceNoise
-          << ";\ndisplacementNoise " << s.displacementNoise << ";\nspecimens " << runs.features.size()
-          << ";\nfailedRuns " << runs.failed << ";\n";
+        o << ");\neffects\n{\n"
+          << s.hiddenEffectsText << "}\nforceNoise " << s.forceNoise << ";\ndisplacementNoise "
+          << s.displacementNoise << ";\nspecimens " << runs.features.size() << ";\nfailedRuns " << runs.failed
+          << ";\n";
     });
     return {measurements, label, static_cast<int>(runs.features.size())};
 }

@@ -370,7 +370,8 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     // tests/unit/dem/data/floorPlate.stl: a 100 mm square floor at z = 0 as 32 triangles
     // (25 mm grid). The block straddles the grid lines x = 0 and y = 0, so its cells touch
     // triangle edges and vertices while the upper plate pushes it down and breaks bonds.
-    const TriSurface floor = readStl(std::string(ROCKFRAC_SOURCE_DIR) + "/tests/unit/dem/data/floorPlate.stl");
+    const TriSurface floor =
+        readStl(std::string(ROCKFRAC_SOURCE_DIR) + "/tests/unit/dem/data/floorPlate.stl");
     REQUIRE(floor.triangles.size() == 32);
     DemParameters p = quietParameters();
     p.bond_tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
@@ -384,7 +385,8 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     for (DemModel* model : {&analytic, &fromStl}) {
         for (int c = 0; c < model->cells().size(); ++c)
             model->setCellPose(c, model->cells().position[c] + shift, model->cells().orientation[c]);
-        model->addPlate({0.0, 0.0, zMax - zMin}, {0.0, 0.0, -1.0}, {0.4, 0.1, -0.5});  // pressing and shearing
+        model->addPlate({0.0, 0.0, zMax - zMin}, {0.0, 0.0, -1.0},
+                        {0.4, 0.1, -0.5});  // pressing and shearing
     }
     analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     fromStl.addTriSurface(floor.points, floor.triangles);

@@ -13,12 +13,13 @@
 //   explainGap -case tutorials/explainGap/study
 //   explainGap -case tutorials/explainGap/study -jobs 2
 //   explainGap -case tutorials/explainGap/study -dry-run     # check the inputs, run nothing
+#include "explain/explainGap.hpp"
+
 #include <iostream>
 
 #include "core/application.hpp"
 #include "core/error.hpp"
 #include "effects/modelEffect.hpp"
-#include "explain/explainGap.hpp"
 
 using namespace rockfrac;
 using namespace rockfrac::explain;
@@ -48,8 +49,8 @@ int run(Application& app)
 {
     if (app.has("-listEffects")) {
         for (const auto& e : effectLibrary())
-            std::cout << e.name << "  (" << e.parameter << " [" << e.unit << "], neutral " << e.neutral << ")\n    "
-                      << e.physics << "\n    signature: " << e.signature << "\n";
+            std::cout << e.name << "  (" << e.parameter << " [" << e.unit << "], neutral " << e.neutral
+                      << ")\n    " << e.physics << "\n    signature: " << e.signature << "\n";
         return exitSuccess;
     }
     ExplainStudy study = readExplainStudy(app.casePath());

@@ -38,8 +38,8 @@ int run(Application& app)
 {
     const TwinStudy study = readTwinStudy(app.casePath());
     std::cout << "makeTwinData: case " << study.targetCase.string() << ", " << study.seeds.values.size()
-              << " specimens, " << study.hiddenEffects.size() << " hidden effect(s) (not shown: see hiddenLabel)"
-              << std::endl;
+              << " specimens, " << study.hiddenEffects.size()
+              << " hidden effect(s) (not shown: see hiddenLabel)" << std::endl;
     if (app.dryRun()) return exitSuccess;
     const TwinOutcome outcome = makeTwinData(study);
     std::cout << "makeTwinData: wrote " << outcome.measurements.string() << " (" << outcome.specimens
