@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "boxMeshes.hpp"
+#include "demBackend.hpp"
 #include "core/error.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
@@ -57,7 +58,7 @@ struct ImposedBond {
     {
         model.setCellPose(1, rest + opening, orientation);
         model.setCellVelocity(1, velocity, {});
-        model.evaluateForces(0.0);
+        test::evaluateForces(model, 0.0);
         return model.cells().force[0];
     }
     const BondArrays& bonds() const { return model.bonds(); }

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "boxMeshes.hpp"
+#include "demBackend.hpp"
 #include "dem/demModel.hpp"
 #include "dem/gjk.hpp"
 #include "geometry/triSurface.hpp"
@@ -95,14 +96,14 @@ TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem]
                                            p.steel_youngs_modulus, p.steel_poisson_ratio);
     for (double overlap : {1e-8, 1e-7, 1e-6, 1e-5, 5e-5}) {
         placeOnFloor(model, overlap);
-        model.evaluateForces(0.0);
+        test::evaluateForces(model, 0.0);
         const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
         INFO("overlap = " << overlap);
         CHECK(model.cells().force[0].z == Approx(hertz).epsilon(0.02));
         CHECK(model.wallReaction(0).z == Approx(-hertz).epsilon(0.02));
     }
     placeOnFloor(model, -1e-6);  // a gap: no force
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     CHECK(model.cells().force[0].z == 0.0);
 }
 
@@ -115,7 +116,7 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
     const Quat q = model.cells().orientation[1];
     const double overlap = 2e-6;
     model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     // Bonded: the bonds carry the compression and the pair gets no contact force.
     CHECK(model.counters().contacts_active == 0);
     const double bond_force = model.cells().force[1].x;
@@ -125,7 +126,7 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
     std::fill(broken.stage.begin(), broken.stage.end(), bondBroken);
     std::fill(broken.damage.begin(), broken.damage.end(), 1.0);
     model.setBondHistory(broken);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
                                            p.rock_poisson_ratio);
     const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * dilation) * std::pow(overlap, 1.5);
@@ -149,8 +150,8 @@ TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[d
     const Vec3 sliding{0.02, -0.01, -0.005};
     for (DemModel* model : {&analytic, &triangulated}) {
         placeOnFloor(*model, 3e-6, sliding);
-        model->evaluateForces(1e-7);
-        model->evaluateForces(1e-7);  // the tangential spring has grown twice
+        test::evaluateForces(*model, 1e-7);
+        test::evaluateForces(*model, 1e-7);  // the tangential spring has grown twice
     }
     const Vec3 fa = analytic.cells().force[0], ft = triangulated.cells().force[0];
     INFO("analytic " << fa.x << " " << fa.y << " " << fa.z << ", triangles " << ft.x << " " << ft.y << " "
@@ -312,7 +313,7 @@ TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz c
     const DemParameters p = quietParameters();
     const double overlap = 2e-6;
     DemModel model = boxBetweenPlates(p, overlap);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
                                            p.steel_youngs_modulus, p.steel_poisson_ratio);
     const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
@@ -328,7 +329,7 @@ TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz c
     double previous_torque = 0.0;
     for (double angle : {1e-9, 1e-8, 1e-7}) {
         model.setCellPose(0, x, quatFromRotationVector({angle, 0.0, 0.0}) * q);
-        model.evaluateForces(0.0);
+        test::evaluateForces(model, 0.0);
         const double torque = model.cells().torque[0].x;
         INFO("angle " << angle << " torque " << torque);
         CHECK(model.wallReaction(0).z == Approx(-4.0 * hertz).epsilon(1e-3));
@@ -349,12 +350,12 @@ TEST_CASE("a cell rocking between two plates with e = 1, no friction, conserves 
     DemModel model = boxBetweenPlates(p, 5e-6);
     // Rock about x and y, bounce along z, slide sideways a little.
     model.setCellVelocity(0, {0.01, 0.0, 0.02}, {20.0, -12.0, 3.0});
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double initial = model.energies().balance();
     const double dt = 1e-7;  // ~ 1/60 of the contact period
     double largest_deviation = 0.0, largest_torque = 0.0;
     for (int i = 0; i < 20000; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         REQUIRE(model.status().ok());
         largest_deviation = std::max(largest_deviation, std::fabs(model.energies().balance() - initial));
         largest_torque = std::max(largest_torque, norm(model.cells().torque[0]));
@@ -393,8 +394,8 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     const double dt = 2e-8;
     double largest = 0.0;
     for (int step = 0; step < 3000; ++step) {
-        analytic.step(dt);
-        fromStl.step(dt);
+        test::step(analytic, dt);
+        test::step(fromStl, dt);
         REQUIRE(analytic.status().ok());
         REQUIRE(fromStl.status().ok());
         largest = std::max(largest, std::fabs(analytic.wallReaction(1).z));

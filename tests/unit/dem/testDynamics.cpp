@@ -8,6 +8,7 @@
 #include <random>
 
 #include "boxMeshes.hpp"
+#include "demBackend.hpp"
 #include "dem/demModel.hpp"
 #include "voronoi/tessellation.hpp"
 
@@ -45,13 +46,13 @@ TEST_CASE("a torque-free spinning cell with asymmetric inertia keeps its angular
     DemModel model(test::boxBlockMesh(1, 1, 1, {1e-3, 2e-3, 3e-3}, 1e-4, false), p);
     // Spin mostly about the intermediate axis (unstable): the body tumbles, L must not move.
     model.setCellVelocity(0, {}, {0.3, 10.0, 0.2});
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const Vec3 momentum = model.angularMomentum(0);
     const double energy = model.energies().kinetic_rotation;
     const double dt = 1e-4;  // |omega| dt = 1e-3
     double largest_error = 0.0;
     for (int i = 0; i < 20000; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         largest_error = std::max(largest_error, norm(model.angularMomentum(0) - momentum) / norm(momentum));
     }
     // Tolerance: round-off of 2e4 quaternion products (the scheme conserves L exactly).
@@ -70,12 +71,12 @@ TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][
     DemModel model(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
     REQUIRE(model.cells().size() == 100);
     shake(model, 0.05, 20.0, 7);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double dt = 0.02 * model.rayleighTimeStep();
     const double initial = model.energies().balance();
     double largest_deviation = 0.0;
     for (int i = 0; i < 10000; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         INFO(model.status().message() << " KE " << model.energies().kinetic() << " strain "
                                       << model.energies().bond_strain << " initial " << initial);
         REQUIRE(model.status().ok());
@@ -113,7 +114,7 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     const double dt = 0.02 * model.rayleighTimeStep();
     int wall_contacts = 0;  // the most at any step
     for (int i = 0; i < 1500; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         wall_contacts = std::max(wall_contacts, model.counters().wall_contacts_active);
     }
     counters = model.counters();
@@ -147,7 +148,7 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
     const double dt = 2.0 * model.rayleighTimeStep();
     long failed_at = -1;
     for (int i = 0; i < 2000 && failed_at < 0; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         if (!model.status().ok()) failed_at = model.status().step;
     }
     REQUIRE(failed_at > 0);
@@ -167,9 +168,9 @@ TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]
     shake(model, 0.01, 2.0, 5);
     const double dt = 0.02 * model.rayleighTimeStep();
     const int n_steps = 200;
-    model.step(dt);
+    test::step(model, dt);
     const double start = omp_get_wtime();
-    for (int i = 0; i < n_steps; ++i) model.step(dt);
+    for (int i = 0; i < n_steps; ++i) test::step(model, dt);
     const double seconds = omp_get_wtime() - start;
     const int n_cells = model.cells().size();
     WARN("cells " << n_cells << ", bonds per cell " << double(model.bonds().size()) / n_cells << ", threads "
@@ -195,7 +196,7 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
         original.setCellVelocity(c, original.cells().velocity[c] + Vec3{0.0, 0.0, -2.0},
                                  original.cells().angular_velocity[c]);
     const double dt = 0.02 * original.rayleighTimeStep();
-    for (int i = 0; i < 800; ++i) original.step(dt);
+    test::steps(original, dt, 800);
     REQUIRE(original.counters().bonds_broken > 0);
 
     DemModel restarted(mesh, p);
@@ -209,8 +210,8 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
                        original.initialBalance());
     restarted.setCellForces(cells.force, cells.torque);
     for (int i = 0; i < 400; ++i) {
-        original.step(dt);
-        restarted.step(dt);
+        test::step(original, dt);
+        test::step(restarted, dt);
     }
     const auto& a = original.cells().position;
     const auto& b = restarted.cells().position;
@@ -251,10 +252,10 @@ bool stableAt(const VoronoiMesh& mesh, const DemParameters& p, double dt, int st
 {
     DemModel model(mesh, p);
     shake(model, 0.01, 5.0, 21);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double initial = model.energies().kinetic();
     for (int i = 0; i < steps; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         if (!model.status().ok() || model.energies().kinetic() > 1e3 * initial) return false;
     }
     return true;
@@ -295,13 +296,13 @@ TEST_CASE("a bonded 100-cell Voronoi cluster without damping keeps its energy", 
     DemModel model(mesh, p);
     REQUIRE(model.cells().size() == 100);
     shake(model, 0.05, 20.0, 29);
-    model.evaluateForces(0.0);
+    test::evaluateForces(model, 0.0);
     const double dt = 0.25 * model.criticalTimeStep().value;
     const double initial = model.energies().balance();
     double largest = 0.0, strain = 0.0;
     const int steps = 20000;
     for (int i = 0; i < steps; ++i) {
-        model.step(dt);
+        test::step(model, dt);
         REQUIRE(model.status().ok());
         largest = std::max(largest, std::fabs(model.energies().balance() - initial));
         strain = std::max(strain, model.energies().bond_strain);
