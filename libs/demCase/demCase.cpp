@@ -229,6 +229,11 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
     s.put("cell.velocity", cells.velocity);
     s.put("cell.orientation", quats(cells.orientation));
     s.put("cell.angularVelocity", cells.angular_velocity);
+    // The forces of the last step: the continued run starts its next step with them,
+    // as the uninterrupted run does, instead of re-evaluating the dashpots at the
+    // end-of-step velocities (which would make the continuation differ).
+    s.put("cell.force", cells.force);
+    s.put("cell.torque", cells.torque);
 
     const BondArrays& b = model.bonds();
     s.put("bond.stage", std::vector<std::uint8_t>(b.stage.begin(), b.stage.end()));
@@ -341,6 +346,10 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     DemEnergies energies = energiesFrom(s.doubles("energies", 10));
     if (s.has("energyExchanged")) energies.exchanged = s.scalar("energyExchanged");
     model.setClock(r.time, r.step, energies, s.scalar("initialBalance"));
+    // Last, as setCellForces marks the forces valid (states written before 2026-12
+    // have none: the first step then re-evaluates them).
+    if (s.has("cell.force"))
+        model.setCellForces(s.vectors("cell.force", nCells), s.vectors("cell.torque", nCells));
     return r;
 }
 

@@ -39,7 +39,7 @@ struct ExplainStudy {
     double heldOutFraction = 0.5;
     double minimumGapReduction = 0.3;
     double significance = 0.01;
-    double indistinguishableCosine = 0.95;
+    double indistinguishableAic = 2.0;  // kept effects within this AIC of the best are not told apart
 
     // A calibration study over baseline + effect parameters, for the runCases helpers.
     calibration::CalibrationStudy runStudy() const;
