@@ -12,6 +12,16 @@
 #define RF_HD
 #endif
 
+// Inline a small hot function into its kernel loop whatever the compiler's size heuristics
+// say (the bond law into the interface kernel: docs/benchmarks.md, profile-driven changes).
+#if defined(__CUDACC__)
+#define RF_FORCE_INLINE __forceinline__
+#elif defined(__GNUC__)
+#define RF_FORCE_INLINE inline __attribute__((always_inline))
+#else
+#define RF_FORCE_INLINE inline
+#endif
+
 namespace rockfrac {
 
 struct Vec3 {

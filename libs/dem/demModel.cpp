@@ -583,8 +583,14 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
 
 namespace {
 
-bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-bool same(const Quat& a, const Quat& b) { return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z; }
+bool same(const Vec3& a, const Vec3& b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+bool same(const Quat& a, const Quat& b)
+{
+    return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
+}
 
 }  // namespace
 

@@ -90,7 +90,8 @@ struct VoronoiQnscLaw {
         return tau2 >= (1.0 - tensile * tensile) * shear_strength * shear_strength;
     }
 
-    RF_HD static BondOutput evaluate(const BondMaterial& m, const BondInput& in, BondHistory& h)
+    RF_HD RF_FORCE_INLINE static BondOutput evaluate(const BondMaterial& m, const BondInput& in,
+                                                     BondHistory& h)
     {
         BondOutput out;
         if (h.stage == bondBroken) return out;

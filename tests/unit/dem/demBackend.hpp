@@ -18,7 +18,10 @@ namespace rockfrac::test {
 
 #ifdef ROCKFRAC_TEST_ON_CUDA
 
-inline const char* demBackendName() { return "cuda"; }
+inline const char* demBackendName()
+{
+    return "cuda";
+}
 
 // One explicit step of model on the device; returns the new time.
 inline double step(DemModel& model, double dt)
@@ -47,16 +50,25 @@ inline void evaluateForces(DemModel& model, double dt)
 
 #else
 
-inline const char* demBackendName() { return "cpu"; }
+inline const char* demBackendName()
+{
+    return "cpu";
+}
 
-inline double step(DemModel& model, double dt) { return model.step(dt); }
+inline double step(DemModel& model, double dt)
+{
+    return model.step(dt);
+}
 
 inline void steps(DemModel& model, double dt, int n)
 {
     for (int i = 0; i < n && model.status().ok(); ++i) model.step(dt);
 }
 
-inline void evaluateForces(DemModel& model, double dt) { model.evaluateForces(dt); }
+inline void evaluateForces(DemModel& model, double dt)
+{
+    model.evaluateForces(dt);
+}
 
 #endif
 

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "boxMeshes.hpp"
-#include "demBackend.hpp"
 #include "core/error.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
+#include "demBackend.hpp"
 
 using namespace rockfrac;
 

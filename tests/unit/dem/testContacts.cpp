@@ -6,9 +6,9 @@
 #include <random>
 
 #include "boxMeshes.hpp"
-#include "demBackend.hpp"
 #include "dem/demModel.hpp"
 #include "dem/gjk.hpp"
+#include "demBackend.hpp"
 #include "geometry/triSurface.hpp"
 
 using namespace rockfrac;

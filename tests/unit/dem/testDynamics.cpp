@@ -8,8 +8,8 @@
 #include <random>
 
 #include "boxMeshes.hpp"
-#include "demBackend.hpp"
 #include "dem/demModel.hpp"
+#include "demBackend.hpp"
 #include "voronoi/tessellation.hpp"
 
 using namespace rockfrac;
