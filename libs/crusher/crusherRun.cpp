@@ -12,6 +12,7 @@
 #include "crusher/feedRock.hpp"
 #include "crusher/machineLoading.hpp"
 #include "demCase/demCase.hpp"
+#include "demCuda/cudaDemModel.hpp"
 #include "geometry/triSurface.hpp"
 #include "io/timeSeries.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
@@ -91,6 +92,11 @@ struct CrusherRun::Impl {
     MachineLoading loading;
     std::unique_ptr<FeedFactory> factory;
     std::unique_ptr<DemModel> model;
+    // controlDict `backend cuda;`: the steps run on the device; the host model stays the
+    // owner of the state and is synchronised around what changes it on the host (feed,
+    // destructor, output), as in bondedDemFoam.
+    bool useCuda = false;
+    std::unique_ptr<CudaDemModel> device;
     CellShapes shapes;
     int mantle = -1, concave = -1, choke = -1;
     bool chokeLowered = false;
@@ -112,11 +118,7 @@ struct CrusherRun::Impl {
           controlDict(Dictionary::readFile(a.path("system/controlDict"))),
           time(controlDict, a.casePath())
     {
-        // The CUDA backend does not insert or remove cells (docs/benchmarks.md).
-        if (controlDict.found("backend") && controlDict.getWord("backend", {"cpu", "cuda"}) == "cuda")
-            throw UserError(controlDict.location("backend").str() +
-                            ": backend cuda is not available for a crusher run (cells are inserted and "
-                            "removed, which the CUDA backend does not do); set 'backend cpu;'");
+        useCuda = readCudaBackend(controlDict);
         parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
         loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
         parameters.gravity = loading.gravity;
@@ -182,8 +184,28 @@ struct CrusherRun::Impl {
             chokeLowered = true;
         }
         const long feedEvery = std::max(1L, std::lround(loading.feed.interval / time.deltaT()));
-        if (step % feedEvery == 0)
-            for (const InsertedRock& rock : factory->feed(*model, t)) appendShapes(shapes, rock, *model);
+        if (step % feedEvery == 0) {
+            synchronise();  // the factory looks for free space among the current cells
+            const std::vector<InsertedRock> rocks = factory->feed(*model, t);
+            for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, *model);
+            if (!rocks.empty() && device) device->upload();
+        }
+    }
+
+    // Cells are inserted and removed on the host (DemModel::insertCells/removeCells, the
+    // same code for both backends); with the CUDA backend the device state comes down
+    // before and goes up after, at feed and destructor steps only.
+    void synchronise()
+    {
+        if (device) device->downloadState();
+    }
+
+    void advance()
+    {
+        if (device)
+            device->step(time.deltaT());
+        else
+            model->step(time.deltaT());
     }
 
     void afterStep(TimeSeriesWriter& discharge)
@@ -198,8 +220,10 @@ struct CrusherRun::Impl {
         sumPower += power;
         ++sampleSteps;
         if (step % loading.destructor.interval != 0) return;
+        synchronise();
         const DestructorResult r = destroyBelow(*model, loading.destructor.below);
         if (r.fragments.empty()) return;
+        if (device) device->upload();
         compactShapes(shapes, r.new_index);
         massDischarged += r.mass;
         fragmentsDischarged += static_cast<int>(r.fragments.size());
@@ -254,6 +278,7 @@ struct CrusherRun::Impl {
     void writeVtk()
     {
         if (model->cells().size() == 0) return;
+        synchronise();
         writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
     }
 
@@ -308,6 +333,13 @@ int CrusherRun::execute()
         return exitSuccess;
     }
     installInterruptHandlers();
+    if (r.useCuda) {
+        r.device = std::make_unique<CudaDemModel>(*r.model);
+        std::printf("Backend: %s, %s (cells are fed and discharged on the host)\n",
+                    cudaBackendSummary().c_str(), cudaBackendInfo().status.c_str());
+    } else {
+        std::printf("Backend: cpu (OpenMP)\n");
+    }
     TimeSeriesWriter machine(r.app.casePath(), "machine", Impl::machineColumns());
     TimeSeriesWriter discharge(r.app.casePath(), "discharge",
                                {{"Time", "s"},
@@ -325,12 +357,15 @@ int CrusherRun::execute()
     while (r.step < endStep) {
         r.prepareStep();
         if (r.step == 0) {
-            r.model->evaluateForces(r.time.deltaT());
+            if (r.device)
+                r.device->evaluateForces(r.time.deltaT());
+            else
+                r.model->evaluateForces(r.time.deltaT());
             machine.append(r.machineRow());
             r.writeVtk();
         }
         cellSteps += r.model->cells().size();
-        r.model->step(r.time.deltaT());
+        r.advance();
         ++r.step;
         const DemStatus& status = r.model->status();
         if (!status.ok()) throw UserError("step " + std::to_string(r.step) + ": " + status.message());

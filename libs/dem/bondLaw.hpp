@@ -134,8 +134,14 @@ template <class Law>
 RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockSums& sums)
 {
     const int ci = a.cell_i[k], cj = a.cell_j[k];
-    const Mat3& Ri = a.rotation[ci];
-    const Mat3& Rj = a.rotation[cj];
+    // The two cells' state as local copies: the history stores below go through double
+    // pointers the compiler cannot prove distinct from these arrays, so references would be
+    // re-read for every bond (profile-driven, docs/benchmarks.md).
+    const Mat3 Ri = a.rotation[ci];
+    const Mat3 Rj = a.rotation[cj];
+    const Vec3 xi = a.position[ci], xj = a.position[cj];
+    const Vec3 vi = a.velocity[ci], vj = a.velocity[cj];
+    const Vec3 wi = a.angular_velocity_world[ci], wj = a.angular_velocity_world[cj];
     // The bond normal rotates with both cells (n_j is the outward normal of cell j's face).
     const Vec3 normal = normalised(Ri * a.normal_i_body[k] - Rj * a.normal_j_body[k]);
     BondInput in;
@@ -159,9 +165,8 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
         if (a.stage[b] == bondBroken) continue;
         const Vec3 arm_i = Ri * a.anchor_i_body[b];
         const Vec3 arm_j = Rj * a.anchor_j_body[b];
-        in.opening = (a.position[cj] + arm_j) - (a.position[ci] + arm_i);
-        in.relative_velocity = (a.velocity[cj] + cross(a.angular_velocity_world[cj], arm_j)) -
-                               (a.velocity[ci] + cross(a.angular_velocity_world[ci], arm_i));
+        in.opening = (xj + arm_j) - (xi + arm_i);
+        in.relative_velocity = (vj + cross(wj, arm_j)) - (vi + cross(wi, arm_i));
         // An elastic bond's history is its stage and D (= 0) only: the softening
         // fields are read once damage has begun, and written back only when the law
         // has changed them (after the onset), which spares most of the bond

@@ -51,6 +51,11 @@ CellShapes captureCellShapes(const VoronoiMesh& mesh, const DemModel& model);
 void writeDemVtk(const std::filesystem::path& caseDir, int index, const DemModel& model,
                  const CellShapes& shapes, bool restarted);
 
+// controlDict `backend cpu|cuda;` (default cpu): true for cuda. Asking for cuda where this
+// build or machine has none is one UserError naming the entry (demCuda/cudaDemModel.hpp).
+class Dictionary;
+bool readCudaBackend(const Dictionary& controlDict);
+
 // Whole state (cells, bonds, contacts, walls, clock, energies) of a model.
 void writeDemState(const std::filesystem::path& file, const DemModel& model, long step, double peakForce,
                    bool loadingStarted);

@@ -46,6 +46,8 @@ void checkDemMemory(const fs::path& caseDir)
                     "use fewer cells (nCells of system/voronoiMeshDict) or a machine with more memory");
 }
 
+}  // namespace
+
 // controlDict `backend cpu|cuda;` (default cpu). Asking for cuda where this build or
 // machine has none is one error naming the entry (demCuda/cudaDemModel.hpp).
 bool readCudaBackend(const Dictionary& controlDict)
@@ -58,8 +60,6 @@ bool readCudaBackend(const Dictionary& controlDict)
                         info.status + "; set 'backend cpu;' in " + controlDict.fileName());
     return true;
 }
-
-}  // namespace
 
 struct BondedDemRun::Impl {
     const Application& app;
