@@ -221,6 +221,56 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
     CHECK(original.wallReaction(0).z == restarted.wallReaction(0).z);
 }
 
+// The forces of a step are reused by the next (one evaluation per step): re-setting a
+// wall's velocity to the value it has must keep them (bondedDemFoam re-asserts its plate
+// speeds every step), and a new value must make the next step re-evaluate them first,
+// exactly as an explicit evaluation would (docs/theory-dem.md §2).
+TEST_CASE("a wall velocity set to its value keeps the forces; a new value re-evaluates them", "[dem][wall]")
+{
+    DemParameters p;
+    p.bond_damping = 0.05;
+    p.damping_reading = DampingReading::criticalFraction;
+    const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 3, {cell_size, cell_size, cell_size}, dilation, true,
+                                                {0.0, 0.0, 0.2 * dilation});
+    const Vec3 push{0.0, 0.0, -0.5};
+    auto make = [&] {
+        DemModel model(mesh, p);
+        model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+        model.addPlate({0.0, 0.0, 3.0 * cell_size + 0.2 * dilation - 1e-6}, {0.0, 0.0, -1.0},
+                       push);  // 1 um in
+        shake(model, 0.05, 5.0, 17);
+        return model;
+    };
+    DemModel once = make(), reasserted = make(), changed = make(), explicitly = make();
+    const double dt = 0.02 * once.rayleighTimeStep();
+    for (int i = 0; i < 300; ++i) {
+        test::step(once, dt);
+        reasserted.setWallVelocity(1, push);
+        test::step(reasserted, dt);
+    }
+    REQUIRE(once.wallReaction(1).z != 0.0);  // the upper plate is pressing on the block
+    const auto& a = once.cells().position;
+    const auto& b = reasserted.cells().position;
+    CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+    CHECK(once.energies().balance() == reasserted.energies().balance());
+
+    // Halfway, the plate speeds up: the step must start from forces with the new velocity.
+    const Vec3 faster{0.0, 0.0, -1.0};
+    for (int i = 0; i < 300; ++i) {
+        if (i == 150) {
+            changed.setWallVelocity(1, faster);
+            explicitly.setWallVelocity(1, faster);
+            test::evaluateForces(explicitly, 0.0);
+        }
+        test::step(changed, dt);
+        test::step(explicitly, dt);
+    }
+    const auto& c = changed.cells().position;
+    const auto& d = explicitly.cells().position;
+    CHECK(std::memcmp(c.data(), d.data(), c.size() * sizeof(Vec3)) == 0);
+    CHECK(changed.wallReaction(1).z == explicitly.wallReaction(1).z);
+}
+
 TEST_CASE("critical time step: two bonded cells against the analytic omega = sqrt(2K/m)", "[dem][timestep]")
 {
     DemParameters p = quietParameters();
