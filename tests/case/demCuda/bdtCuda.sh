@@ -4,12 +4,7 @@
 # breaks the two force curves agree to 1e-6 of the peak force; the peak force agrees
 # to 2 % (fracture amplifies the round-off of a different summation order).
 source "$(dirname "$0")/../caseTestFunctions"
-rc=0
-info=$(cudaBackendInfo) || rc=$?
-if [ "$rc" -ne 0 ]; then
-    echo "SKIP: no usable CUDA device: $(grep '^status:' <<< "$info")"
-    exit 77
-fi
+skipWithoutCudaDevice
 copyTutorial tutorials/BDT/granite "$work/base"
 cd "$work/base"
 runApplication() { "$@" > "log.$1" 2>&1 || fail "$1 failed: $(tail -3 "log.$1")"; }

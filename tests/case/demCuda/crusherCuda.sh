@@ -5,12 +5,7 @@
 # power; and the mean power is within 20 % of the CPU run's (fracture makes the two runs
 # two realisations, not the same numbers: docs/benchmarks.md).
 source "$(dirname "$0")/../caseTestFunctions"
-rc=0
-info=$(cudaBackendInfo) || rc=$?
-if [ "$rc" -ne 0 ]; then
-    echo "SKIP: no usable CUDA device: $(grep '^status:' <<< "$info")"
-    exit 77
-fi
+skipWithoutCudaDevice
 export OMP_NUM_THREADS=1
 for backend in cpu cuda; do
     copyTutorial tutorials/CH660/tiny "$work/$backend"
