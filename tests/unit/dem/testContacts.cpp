@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "boxMeshes.hpp"
@@ -410,4 +411,45 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     for (int c = 0; c < analytic.cells().size(); ++c)
         for (int d = 0; d < 3; ++d)
             CHECK(fromStl.cells().position[c][d] == Approx(analytic.cells().position[c][d]).margin(1e-9));
+}
+
+// Experiment (hidden tag): a cell rocking on a convex ridge of a triangulated roof, e = 1,
+// no friction: how well is energy conserved when the wall contact switches between the GJK
+// contact (ridge under a face) and the vertex patch (a corner on a panel)?
+TEST_CASE("experiment: a cell rocking on a triangulated ridge, e = 1, energy", "[.ridge]")
+{
+    DemParameters p = quietParameters();
+    p.rock_steel_restitution = 1.0;
+    p.rock_steel_friction = 0.0;
+    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    const Vec3 centre = model.cells().position[0];
+    const char* degrees = std::getenv("RIDGE_DEGREES");  // 10 by default; 0 = a flat floor
+    const double L = 0.02, slope = std::tan((degrees ? std::atof(degrees) : 10.0) * 3.14159265358979 / 180.0);
+    const double zr = centre.z - 0.5 * cell_size + 2e-6;  // ridge 2 um into the cell's bottom face
+    const double x0 = centre.x + 1e-3;                    // ridge 1 mm beside the centre
+    const double zl = zr - L * slope;
+    model.addTriSurface(
+        {{x0 - L, -L, zl}, {x0, -L, zr}, {x0, L, zr}, {x0 - L, L, zl}, {x0 + L, -L, zl}, {x0 + L, L, zl}},
+        {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}});
+    model.addPlate(centre + Vec3{0.0, 0.0, 0.5 * cell_size + 2e-6}, {0.0, 0.0, -1.0});
+    model.setCellVelocity(0, {0.05, 0.0, 0.0}, {0.0, 30.0, 0.0});
+    test::evaluateForces(model, 0.0);
+    const double initial = model.energies().balance();
+    const double kinetic = model.energies().kinetic();
+    const double dt = 1e-7;
+    double largest = 0.0;
+    int intersections = 0;
+    for (int i = 0; i < 40000; ++i) {
+        test::step(model, dt);
+        REQUIRE(model.status().ok());
+        const double deviation = model.energies().balance() - initial;
+        if (std::fabs(deviation) > std::fabs(largest)) largest = deviation;
+        intersections += model.counters().core_intersections;
+        if (i % 4000 == 0)
+            WARN("step " << i << " balance error " << deviation << " (" << deviation / kinetic * 100
+                         << " % of the initial KE), wall contacts " << model.counters().wall_contacts_active
+                         << ", x " << model.cells().position[0].x - centre.x);
+    }
+    WARN("initial KE " << kinetic << " largest balance error " << largest << " = " << largest / kinetic * 100
+                       << " %, core intersections " << intersections);
 }
