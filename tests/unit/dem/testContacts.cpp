@@ -428,9 +428,13 @@ TEST_CASE("experiment: a cell rocking on a triangulated ridge, e = 1, energy", "
     const double zr = centre.z - 0.5 * cell_size + 2e-6;  // ridge 2 um into the cell's bottom face
     const double x0 = centre.x + 1e-3;                    // ridge 1 mm beside the centre
     const double zl = zr - L * slope;
-    model.addTriSurface(
-        {{x0 - L, -L, zl}, {x0, -L, zr}, {x0, L, zr}, {x0 - L, L, zl}, {x0 + L, -L, zl}, {x0 + L, L, zl}},
-        {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}});
+    // RIDGE_TILT_DEGREES: the ridge rises along y, so that it is not parallel to the face.
+    const char* tilt_degrees = std::getenv("RIDGE_TILT_DEGREES");
+    const double tilt = std::tan((tilt_degrees ? std::atof(tilt_degrees) : 0.0) * 3.14159265358979 / 180.0);
+    std::vector<Vec3> roof{{x0 - L, -L, zl}, {x0, -L, zr},     {x0, L, zr},
+                           {x0 - L, L, zl},  {x0 + L, -L, zl}, {x0 + L, L, zl}};
+    for (Vec3& v : roof) v.z += tilt * (v.y - 0.5 * cell_size);  // 2 um in at the high end
+    model.addTriSurface(roof, {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}});
     model.addPlate(centre + Vec3{0.0, 0.0, 0.5 * cell_size + 2e-6}, {0.0, 0.0, -1.0});
     model.setCellVelocity(0, {0.05, 0.0, 0.0}, {0.0, 30.0, 0.0});
     test::evaluateForces(model, 0.0);
