@@ -30,10 +30,15 @@ for k in 1 2 3; do
 done
 echo "scenario / verdict / effect / held-out reduction:"
 cat summary.dat
-awk -F'\t' '{ split($1, p, "-"); e = p[1]; n[e]++;
-    hit = (e == "none") ? ($2 == "noGapBeyondScatter") :
-          (e == "seating" && $3 == "seatingOffset") || (e == "compliance" && $3 == "machineCompliance") ||
-          (e == "crumbling" && $3 == "contactCrumbling") || (e == "scatter" && $3 == "bondStrengthScatter") ||
-          (e == "rate" && $3 == "rateDamping") || (e == "friction" && $3 == "plateFriction");
-    ok[e] += hit }
+# (one awk statement per line: Debian's default awk, mawk, takes no line break inside an expression)
+awk -F'\t' '
+    { split($1, p, "-"); e = p[1]; n[e]++; hit = 0 }
+    e == "none" && $2 == "noGapBeyondScatter" { hit = 1 }
+    e == "seating" && $3 == "seatingOffset" { hit = 1 }
+    e == "compliance" && $3 == "machineCompliance" { hit = 1 }
+    e == "crumbling" && $3 == "contactCrumbling" { hit = 1 }
+    e == "scatter" && $3 == "bondStrengthScatter" { hit = 1 }
+    e == "rate" && $3 == "rateDamping" { hit = 1 }
+    e == "friction" && $3 == "plateFriction" { hit = 1 }
+    { ok[e] += hit }
     END { for (e in n) printf "%-10s %d of %d %s\n", e, ok[e], n[e], (e == "none") ? "without a false alarm" : "attributed" }' summary.dat
