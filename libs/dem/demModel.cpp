@@ -581,19 +581,6 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
     return nWalls() - 1;
 }
 
-namespace {
-
-bool same(const Vec3& a, const Vec3& b)
-{
-    return a.x == b.x && a.y == b.y && a.z == b.z;
-}
-bool same(const Quat& a, const Quat& b)
-{
-    return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
-}
-
-}  // namespace
-
 // The forces of the last step stay valid when the wall's motion is set to what it
 // already is (a solver re-asserting its plate speeds every step): the wall contacts'
 // dashpots and friction see the wall velocity, so any change makes them stale and the
@@ -601,7 +588,7 @@ bool same(const Quat& a, const Quat& b)
 void DemModel::setWallVelocity(int wall, const Vec3& velocity, const Vec3& angular_velocity)
 {
     WallState& w = walls_.at(wall);
-    if (same(w.velocity, velocity) && same(w.angular_velocity, angular_velocity)) return;
+    if (w.velocity == velocity && w.angular_velocity == angular_velocity) return;
     w.velocity = velocity;
     w.angular_velocity = angular_velocity;
     forces_valid_ = false;
@@ -611,8 +598,8 @@ void DemModel::setWallMotion(int wall, const WallMotion& motion)
 {
     WallState& w = walls_.at(wall);
     const Quat orientation = normalised(motion.orientation);
-    if (same(w.origin, motion.translation) && same(w.orientation, orientation) &&
-        same(w.velocity, motion.velocity) && same(w.angular_velocity, motion.angular_velocity))
+    if (w.origin == motion.translation && w.orientation == orientation && w.velocity == motion.velocity &&
+        w.angular_velocity == motion.angular_velocity)
         return;
     w.origin = motion.translation;
     w.orientation = orientation;

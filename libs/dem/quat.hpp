@@ -24,6 +24,12 @@ RF_HD inline Quat operator*(const Quat& a, const Quat& b)
             a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
+// Component-wise equality (not rotation equality: q and -q compare unequal).
+RF_HD inline bool operator==(const Quat& a, const Quat& b)
+{
+    return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
 RF_HD inline Quat conjugate(const Quat& q)
 {
     return {q.w, -q.x, -q.y, -q.z};

@@ -18,11 +18,6 @@ namespace rockfrac::test {
 
 #ifdef ROCKFRAC_TEST_ON_CUDA
 
-inline const char* demBackendName()
-{
-    return "cuda";
-}
-
 // One explicit step of model on the device; returns the new time.
 inline double step(DemModel& model, double dt)
 {
@@ -49,11 +44,6 @@ inline void evaluateForces(DemModel& model, double dt)
 }
 
 #else
-
-inline const char* demBackendName()
-{
-    return "cpu";
-}
 
 inline double step(DemModel& model, double dt)
 {
