@@ -92,8 +92,7 @@ void intactBlock(int nCells, int steps, bool cuda, double given_dt)
         secondsFor(device, 5, dt);  // warm up: lists, caches
         double best = 1e300;
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(device, steps, dt));
-        report(name.c_str(), model.cells().size(), model.bonds().size(), device.deviceBytes(), -1, steps,
-               best, dt);
+        report(name.c_str(), model.cells().size(), model.nBonds(), device.deviceBytes(), -1, steps, best, dt);
         return;
     }
     for (int threads : {1, 2}) {
@@ -101,9 +100,18 @@ void intactBlock(int nCells, int steps, bool cuda, double given_dt)
         secondsFor(model, 5, dt);  // warm up: lists, caches, threads
         double best = 1e300;
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
-        report(name.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps,
-               best, dt);
+        report(name.c_str(), model.cells().size(), model.nBonds(), model.memoryBytes(), threads, steps, best,
+               dt);
     }
+    // Where the bytes per cell go (DemModel::memoryUse, capacities of the state arrays).
+    const DemMemoryBytes m = model.memoryUse();
+    const double n = model.cells().size();
+    std::printf(
+        "# memory per cell [B]: cells %.0f, cores %.0f, anchor nodes %.0f (%.1f per cell), interfaces %.0f, "
+        "bonds %.0f, softening pool %.0f, contact pairs %.0f (%.1f per cell), wall items %.0f, lists %.0f\n",
+        m.cells / n, m.cores / n, m.anchor_nodes / n, model.cells().anchor_nodes.size() / n, m.interfaces / n,
+        m.bonds / n, m.softening / n, m.pairs / n, model.contactPairs().size() / n, m.wall_items / n,
+        m.lists / n);
     // What the CUDA backend would hold on the device for this model (from the array sizes).
     const std::size_t device_bytes = CudaDemModel::estimateDeviceBytes(model);
     if (device_bytes > 0)
@@ -136,8 +144,8 @@ void fromCase(const std::string& caseDir, int steps)
         for (int r = 0; r < 3; ++r) best = std::min(best, secondsFor(model, steps, dt));
         std::string label =
             "case t=" + std::string(name) + " (" + std::to_string(model.counters().bonds_broken) + " broken)";
-        report(label.c_str(), model.cells().size(), model.bonds().size(), model.memoryBytes(), threads, steps,
-               best, dt);
+        report(label.c_str(), model.cells().size(), model.nBonds(), model.memoryBytes(), threads, steps, best,
+               dt);
     }
 }
 

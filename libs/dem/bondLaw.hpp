@@ -7,6 +7,7 @@
 //     BondOutput evaluate(const BondMaterial&, const BondInput&, BondHistory&)
 // A new law is a new file (the struct and its runner, see voronoiQnscBond.*)
 // plus one line in bondLawTable.cpp.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,17 @@ struct BondHistory {
     double damage = 0.0;                // D [-]
 };
 
+// The part of the history that only a bond past its onset has. The model keeps it
+// in a pool claimed per interface at the first onset of one of its bonds, so an
+// intact specimen carries none of it (docs/theory-dem.md §7, docs/benchmarks.md).
+struct BondSoftening {
+    double onset_displacement = 0.0;    // d_e0 [m]
+    double onset_stress = 0.0;          // sigma_e0 [Pa]
+    double rupture_displacement = 0.0;  // d_f [m]
+    double max_displacement = 0.0;      // d_max [m]
+    double damage = 0.0;                // D [-]
+};
+
 // Kinematics of one bond, in world coordinates.
 struct BondInput {
     Vec3 opening;                   // d = x_j - x_i of the two anchor points [m]
@@ -65,7 +77,22 @@ struct BondBlockSums {
     double damping_power = 0.0;
     double fracture_dissipation = 0.0;
     int bonds_broken_now = 0;
+    // Interfaces of the block whose first onset found no softening slot: nothing of them
+    // was written or summed; the model claims their slots and evaluates them again.
+    int pending_onsets = 0;
+
+    RF_HD void add(const BondBlockSums& o)
+    {
+        strain_energy += o.strain_energy;
+        damping_power += o.damping_power;
+        fracture_dissipation += o.fracture_dissipation;
+        bonds_broken_now += o.bonds_broken_now;
+        pending_onsets += o.pending_onsets;
+    }
 };
+
+// intact_bonds[k] of an interface whose first onset is waiting for its softening slot.
+constexpr int bondOnsetPending = -1;
 
 // Raw views of everything a bond kernel reads and writes (no containers, so a
 // CUDA backend can pass device pointers). Interfaces are cell pairs that share a
@@ -90,51 +117,60 @@ struct BondKernelArgs {
     const double* bond_area = nullptr;
     const double* damping_beta = nullptr;    // per interface, seconds
     const double* strength_scale = nullptr;  // per interface factor on sigma-bar and C; nullptr = 1
-    int* intact_bonds = nullptr;
+    // Softening pool entry of the interface's first bond, -1 while every bond is elastic.
+    const int* softening_slot = nullptr;
+    int* intact_bonds = nullptr;  // bondOnsetPending: evaluate again once the slot is claimed
     Vec3* force_on_i = nullptr;   // sum over the interface's bonds
     Vec3* torque_on_i = nullptr;  // about cell i's centroid
     Vec3* torque_on_j = nullptr;  // about cell j's centroid
-    // Bonds.
-    const Vec3* anchor_i_body = nullptr;
-    const Vec3* anchor_j_body = nullptr;
+    // Anchor nodes: the face nodes of each cell in its body frame, shared by the cell's bonds.
+    const int* anchor_node_offset = nullptr;
+    const Vec3* anchor_nodes = nullptr;
+    // Bonds: each end's node within its cell's list, the stage, and the softening pool.
+    const std::uint16_t* node_i = nullptr;
+    const std::uint16_t* node_j = nullptr;
     unsigned char* stage = nullptr;
-    double* onset_displacement = nullptr;
-    double* onset_stress = nullptr;
-    double* rupture_displacement = nullptr;
-    double* max_displacement = nullptr;
-    double* damage = nullptr;
+    BondSoftening* softening = nullptr;
     BondBlockSums* block_sums = nullptr;  // one per block of block_size interfaces
+    // Set: evaluate only these interfaces, in this order, adding to their blocks' sums
+    // (the second pass for interfaces whose first onset was pending).
+    const int* only_interfaces = nullptr;
+    int n_only = 0;
 };
 
-RF_HD inline BondHistory loadBondHistory(const BondKernelArgs& a, int b)
+RF_HD inline BondHistory loadBondHistory(unsigned char stage, const BondSoftening& s)
 {
     BondHistory h;
-    h.stage = a.stage[b];
-    h.onset_displacement = a.onset_displacement[b];
-    h.onset_stress = a.onset_stress[b];
-    h.rupture_displacement = a.rupture_displacement[b];
-    h.max_displacement = a.max_displacement[b];
-    h.damage = a.damage[b];
+    h.stage = stage;
+    h.onset_displacement = s.onset_displacement;
+    h.onset_stress = s.onset_stress;
+    h.rupture_displacement = s.rupture_displacement;
+    h.max_displacement = s.max_displacement;
+    h.damage = s.damage;
     return h;
 }
 
-RF_HD inline void storeBondHistory(const BondKernelArgs& a, int b, const BondHistory& h)
+RF_HD inline BondSoftening softeningOf(const BondHistory& h)
 {
-    a.stage[b] = h.stage;
-    a.onset_displacement[b] = h.onset_displacement;
-    a.onset_stress[b] = h.onset_stress;
-    a.rupture_displacement[b] = h.rupture_displacement;
-    a.max_displacement[b] = h.max_displacement;
-    a.damage[b] = h.damage;
+    BondSoftening s;
+    s.onset_displacement = h.onset_displacement;
+    s.onset_stress = h.onset_stress;
+    s.rupture_displacement = h.rupture_displacement;
+    s.max_displacement = h.max_displacement;
+    s.damage = h.damage;
+    return s;
 }
 
 // All bonds of interface k: kinematics from the two rigid cells, the law, and the
-// interface's total force and torques (summed in bond order).
+// interface's total force and torques (summed in bond order). Returns false, having
+// written nothing but intact_bonds[k] = bondOnsetPending, when a bond of an interface
+// without a softening slot reaches its onset: the caller claims the slot and calls
+// again with the same state, which gives the same evaluation, now stored.
 template <class Law>
-RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockSums& sums)
+RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockSums& block)
 {
     const int ci = a.cell_i[k], cj = a.cell_j[k];
-    // The two cells' state as local copies: the history stores below go through double
+    // The two cells' state as local copies: the history stores below go through
     // pointers the compiler cannot prove distinct from these arrays, so references would be
     // re-read for every bond (profile-driven, docs/benchmarks.md).
     const Mat3 Ri = a.rotation[ci];
@@ -142,6 +178,8 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
     const Vec3 xi = a.position[ci], xj = a.position[cj];
     const Vec3 vi = a.velocity[ci], vj = a.velocity[cj];
     const Vec3 wi = a.angular_velocity_world[ci], wj = a.angular_velocity_world[cj];
+    const Vec3* nodes_i = a.anchor_nodes + a.anchor_node_offset[ci];
+    const Vec3* nodes_j = a.anchor_nodes + a.anchor_node_offset[cj];
     // The bond normal rotates with both cells (n_j is the outward normal of cell j's face).
     const Vec3 normal = normalised(Ri * a.normal_i_body[k] - Rj * a.normal_j_body[k]);
     BondInput in;
@@ -159,27 +197,34 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
         scaled.cohesion *= a.strength_scale[k];
         material = &scaled;
     }
+    const int first = a.bond_offset[k];
+    const int slot = a.softening_slot[k];
+    BondBlockSums sums;
     Vec3 force, torque_i, torque_j;
     int intact = 0;
-    for (int b = a.bond_offset[k]; b < a.bond_offset[k + 1]; ++b) {
-        if (a.stage[b] == bondBroken) continue;
-        const Vec3 arm_i = Ri * a.anchor_i_body[b];
-        const Vec3 arm_j = Rj * a.anchor_j_body[b];
+    for (int b = first; b < a.bond_offset[k + 1]; ++b) {
+        const unsigned char stage = a.stage[b];
+        if (stage == bondBroken) continue;
+        const Vec3 arm_i = Ri * nodes_i[a.node_i[b]];
+        const Vec3 arm_j = Rj * nodes_j[a.node_j[b]];
         in.opening = (xj + arm_j) - (xi + arm_i);
         in.relative_velocity = (vj + cross(wj, arm_j)) - (vi + cross(wi, arm_i));
-        // An elastic bond's history is its stage and D (= 0) only: the softening
-        // fields are read once damage has begun, and written back only when the law
-        // has changed them (after the onset), which spares most of the bond
-        // kernel's memory traffic in a mostly intact specimen (docs/benchmarks.md).
+        // An elastic bond's history is its stage only (D = 0): the softening fields
+        // exist from the onset on and are written back only when the law has changed
+        // them, which spares most of the bond kernel's memory traffic in a mostly
+        // intact specimen (docs/benchmarks.md).
         BondHistory history;
-        if (a.stage[b] == bondElastic) {
-            history.stage = bondElastic;
-            history.damage = a.damage[b];
-        } else {
-            history = loadBondHistory(a, b);
-        }
+        if (stage != bondElastic) history = loadBondHistory(stage, a.softening[slot + (b - first)]);
         const BondOutput out = Law::evaluate(*material, in, history);
-        if (history.stage != bondElastic) storeBondHistory(a, b, history);
+        if (history.stage != bondElastic) {
+            if (slot < 0) {
+                a.intact_bonds[k] = bondOnsetPending;
+                ++block.pending_onsets;
+                return false;
+            }
+            a.stage[b] = history.stage;
+            a.softening[slot + (b - first)] = softeningOf(history);
+        }
         sums.strain_energy += out.strain_energy;
         sums.damping_power += out.damping_power;
         sums.fracture_dissipation += out.fracture_dissipation;
@@ -192,17 +237,26 @@ RF_HD inline void bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
         torque_i += cross(arm_i, out.force_on_i);
         torque_j -= cross(arm_j, out.force_on_i);
     }
+    block.add(sums);
     a.intact_bonds[k] = intact;
     a.force_on_i[k] = force;
     a.torque_on_i[k] = torque_i;
     a.torque_on_j[k] = torque_j;
+    return true;
 }
 
 // The OpenMP loop over blocks of interfaces (static schedule; a block's sums do
-// not depend on the thread count).
+// not depend on the thread count), or the serial second pass over only_interfaces.
 template <class Law>
 void runBondKernel(const BondKernelArgs& a)
 {
+    if (a.only_interfaces) {
+        for (int i = 0; i < a.n_only; ++i) {
+            const int k = a.only_interfaces[i];
+            bondInterfaceKernel<Law>(a, k, a.block_sums[k / a.block_size]);
+        }
+        return;
+    }
     const int n_blocks = (a.n_interfaces + a.block_size - 1) / a.block_size;
 #pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {

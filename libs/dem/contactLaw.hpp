@@ -101,7 +101,9 @@ RF_HD inline Vec3 pointVelocity(const CellContactView& cells, int c, const Vec3&
     return cells.velocity[c] + cross(cells.angular_velocity_world[c], point - cells.position[c]);
 }
 
-// Per-item outputs shared by pairs and wall items.
+// Per-item outputs shared by pairs and wall items. The energy slots are optional:
+// contact pairs (many) leave them null and add their energies to block sums instead
+// (24 bytes less per pair); wall items (few, and each wall's power is wanted) keep them.
 struct ContactItemOutputs {
     Vec3* tangential_spring = nullptr;  // history, world frame
     Vec3* last_normal = nullptr;        // history, for intersecting cores
@@ -111,21 +113,43 @@ struct ContactItemOutputs {
     unsigned char* status = nullptr;
 };
 
+// Energies and counts of a block of contact items, summed in item order.
+struct ContactBlockSums {
+    double elastic_energy = 0.0;
+    double damping_power = 0.0;
+    double friction_dissipation = 0.0;
+    int active = 0;
+    int cores_intersect = 0;
+
+    RF_HD void add(const ContactOutput& out, unsigned char status)
+    {
+        elastic_energy += out.elastic_energy;
+        damping_power += out.damping_power;
+        friction_dissipation += out.friction_dissipation;
+        ++active;
+        cores_intersect += status == contactCoresIntersect;
+    }
+};
+
 RF_HD inline void clearItem(const ContactItemOutputs& o, int item)
 {
     o.tangential_spring[item] = Vec3{};
-    o.elastic_energy[item] = 0.0;
-    o.damping_power[item] = 0.0;
-    o.friction_dissipation[item] = 0.0;
+    if (o.elastic_energy) {
+        o.elastic_energy[item] = 0.0;
+        o.damping_power[item] = 0.0;
+        o.friction_dissipation[item] = 0.0;
+    }
     o.status[item] = contactNone;
 }
 
 RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const ContactOutput& out,
                             unsigned char status)
 {
-    o.elastic_energy[item] = out.elastic_energy;
-    o.damping_power[item] = out.damping_power;
-    o.friction_dissipation[item] = out.friction_dissipation;
+    if (o.elastic_energy) {
+        o.elastic_energy[item] = out.elastic_energy;
+        o.damping_power[item] = out.damping_power;
+        o.friction_dissipation[item] = out.friction_dissipation;
+    }
     o.status[item] = status;
 }
 
@@ -143,8 +167,9 @@ struct PairKernelArgs {
     double* separation_margin = nullptr;
     ContactItemOutputs items;
     Vec3* force_on_b = nullptr;
-    Vec3* torque_on_a = nullptr;
-    Vec3* torque_on_b = nullptr;
+    Vec3* contact_point = nullptr;
+    int block_size = 512;
+    ContactBlockSums* block_sums = nullptr;  // one per block of block_size pairs (CPU runner)
 };
 
 // Where two dilated bodies touch: normal from A to B, overlap, contact point.
@@ -184,11 +209,12 @@ RF_HD inline ContactGeometry coreGeometry(const ConvexVertexSet& A, const Convex
     return g;
 }
 
+// Pair p; an active contact adds its energies to sums.
 template <class Law>
-RF_HD inline void pairKernel(const PairKernelArgs& a, int p)
+RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& sums)
 {
     const int ca = a.cell_a[p], cb = a.cell_b[p];
-    a.force_on_b[p] = a.torque_on_a[p] = a.torque_on_b[p] = Vec3{};
+    a.force_on_b[p] = a.contact_point[p] = Vec3{};
     const CellContactView& cells = a.cells;
     const int iface = a.interface[p];
     // Bonded pairs never get contact forces; the contact starts when the last bond breaks.
@@ -219,10 +245,11 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p)
     in.effective_mass = cells.mass[ca] * cells.mass[cb] / (cells.mass[ca] + cells.mass[cb]);
     in.dt = a.dt;
     const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[p]);
-    storeItem(a.items, p, out, g.cores_intersect ? contactCoresIntersect : contactActive);
+    const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
+    storeItem(a.items, p, out, status);
+    sums.add(out, status);
     a.force_on_b[p] = out.force_on_b;
-    a.torque_on_a[p] = -cross(g.point - cells.position[ca], out.force_on_b);
-    a.torque_on_b[p] = cross(g.point - cells.position[cb], out.force_on_b);
+    a.contact_point[p] = g.point;  // the gather forms the torques about the two centroids
 }
 
 // A wall's pose at the current time: x_world = origin + rotation * x_local, and
@@ -532,11 +559,19 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
         dot(out.force, wallPointVelocity(wall, in.centre)) + dot(wall.angular_velocity, out.torque);
 }
 
+// Blocks of pairs, each summed in pair order (static schedule: the sums do not
+// depend on the thread count).
 template <class Law>
 void runPairKernel(const PairKernelArgs& a)
 {
-#pragma omp parallel for schedule(static) if (a.n_pairs >= parallelMinimumItems())
-    for (int p = 0; p < a.n_pairs; ++p) pairKernel<Law>(a, p);
+    const int n_blocks = (a.n_pairs + a.block_size - 1) / a.block_size;
+#pragma omp parallel for schedule(static) if (n_blocks > 1)
+    for (int block = 0; block < n_blocks; ++block) {
+        ContactBlockSums sums;
+        const int end = a.n_pairs < (block + 1) * a.block_size ? a.n_pairs : (block + 1) * a.block_size;
+        for (int p = block * a.block_size; p < end; ++p) pairKernel<Law>(a, p, sums);
+        a.block_sums[block] = sums;
+    }
 }
 
 template <class Law>

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -132,6 +133,7 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
     skin_ = parameters_.skin_distance;
     interfaces_.bond_offset.assign(1, 0);
     cells_.core_vertex_offset.assign(1, 0);
+    cells_.anchor_node_offset.assign(1, 0);
     buildIncidence();
     refreshKinematicCaches();
     computeForces(0.0);
@@ -253,8 +255,52 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
     };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pairOf(a) < pairOf(b); });
 
+    // Anchor nodes: the distinct bond points of each new cell (a face node carries the
+    // bonds of up to three faces of the cell), sorted by cell and coordinates, each
+    // in its cell's body frame once. end = 2 * bond + (0: the mesh's cellI, 1: cellJ).
+    for (const VoronoiBond& bond : mesh.bonds)
+        if (bond.cellI == bond.cellJ || std::min(bond.cellI, bond.cellJ) < 0 ||
+            std::max(bond.cellI, bond.cellJ) >= mesh.nCells())
+            throw UserError("the Voronoi mesh has an invalid bond");
+    CellArrays& c = cells_;
+    if (c.anchor_node_offset.empty()) c.anchor_node_offset.assign(1, 0);
+    std::vector<int> ends(2 * std::size_t(mesh.nBonds()));
+    std::iota(ends.begin(), ends.end(), 0);
+    auto endCell = [&](int e) { return e % 2 == 0 ? mesh.bonds[e / 2].cellI : mesh.bonds[e / 2].cellJ; };
+    auto endKey = [&](int e) {
+        const Vec3& p = mesh.bonds[e / 2].point;
+        return std::make_tuple(endCell(e), p.x, p.y, p.z);
+    };
+    std::sort(ends.begin(), ends.end(), [&](int a, int b) { return endKey(a) < endKey(b); });
+    // The bond points of a face come from the tessellation of one of its two cells, so
+    // the same node seen from the other cell's faces may differ in the last bits: points
+    // within 1e-9 of the cell size are one node (the other end then starts ~1e-16 of the
+    // cell size away instead of exactly at the point: an initial opening far below any
+    // elastic displacement, docs/theory-dem.md §7).
+    std::vector<std::uint16_t> end_node(ends.size());
+    std::vector<Vec3> points;  // the current cell's nodes, mesh frame
+    for (std::size_t e = 0, local = 0; local < std::size_t(mesh.nCells()); ++local) {
+        const Mat3 R = rotationMatrix(mesh_orientation[local]);
+        const double tolerance = 1e-9 * std::cbrt(std::abs(mesh.volumes[local]));
+        points.clear();
+        for (; e < ends.size() && endCell(ends[e]) == static_cast<int>(local); ++e) {
+            const Vec3& point = mesh.bonds[ends[e] / 2].point;
+            std::size_t node = 0;
+            while (node < points.size() && norm2(points[node] - point) > tolerance * tolerance) ++node;
+            if (node == points.size()) {
+                if (node > 65535)
+                    throw UserError(
+                        "a Voronoi cell has more than 65536 bond nodes: the mesh is not a tessellation");
+                points.push_back(point);
+                c.anchor_nodes.push_back(transposeTimes(R, point - mesh.centroids[local]));
+            }
+            end_node[ends[e]] = static_cast<std::uint16_t>(node);
+        }
+        c.anchor_node_offset.push_back(static_cast<int>(c.anchor_nodes.size()));
+    }
+
     InterfaceArrays& f = interfaces_;
-    BondArrays& b = bonds_;
+    BondStorage& b = bonds_;
     if (f.bond_offset.empty()) f.bond_offset.assign(1, 0);
     const double beta = parameters_.bond_damping;
     for (std::size_t head_index = 0; head_index < order.size();) {
@@ -290,10 +336,12 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
                                      ? beta
                                      : 2.0 * beta * std::sqrt(reduced_mass / stiffness));
         if (!f.strength_scale.empty()) f.strength_scale.push_back(1.0);
+        f.softening_slot.push_back(-1);
         for (std::size_t e = head_index; e < last; ++e) {
-            const VoronoiBond& bond = mesh.bonds[order[e]];
-            b.anchor_i.push_back(transposeTimes(Ri, bond.point - mesh.centroids[li]));
-            b.anchor_j.push_back(transposeTimes(Rj, bond.point - mesh.centroids[lj]));
+            const int bond = order[e];
+            const bool cell_i_is_mesh_I = mesh.bonds[bond].cellI == li;
+            b.node_i.push_back(end_node[2 * bond + (cell_i_is_mesh_I ? 0 : 1)]);
+            b.node_j.push_back(end_node[2 * bond + (cell_i_is_mesh_I ? 1 : 0)]);
         }
         const int n_bonds = static_cast<int>(last - head_index);
         f.intact_bonds.push_back(n_bonds);
@@ -302,16 +350,11 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         cells_.initial_bond_count[cj] += n_bonds;
         head_index = last;
     }
-    const int n_interfaces = f.size(), n_bonds = static_cast<int>(b.anchor_i.size());
+    const int n_interfaces = f.size(), n_bonds = static_cast<int>(b.node_i.size());
     f.force_on_i.resize(n_interfaces, Vec3{});
     f.torque_on_i.resize(n_interfaces, Vec3{});
     f.torque_on_j.resize(n_interfaces, Vec3{});
     b.stage.resize(n_bonds, bondElastic);
-    b.onset_displacement.resize(n_bonds, 0.0);
-    b.onset_stress.resize(n_bonds, 0.0);
-    b.rupture_displacement.resize(n_bonds, 0.0);
-    b.max_displacement.resize(n_bonds, 0.0);
-    b.damage.resize(n_bonds, 0.0);
     counters_.bonds = n_bonds;
 }
 
@@ -350,6 +393,21 @@ void keepFlagged(std::vector<T>& v, const std::vector<char>& keep)
     v.resize(out);
 }
 
+// Keep the CSR ranges [offset[i], offset[i+1]) whose flag is set, in order.
+template <class T>
+void keepFlaggedRanges(std::vector<int>& offset, std::vector<T>& values, const std::vector<char>& keep)
+{
+    std::vector<int> kept_offset(1, 0);
+    std::vector<T> kept;
+    for (std::size_t i = 0; i + 1 < offset.size(); ++i) {
+        if (!keep[i]) continue;
+        kept.insert(kept.end(), values.begin() + offset[i], values.begin() + offset[i + 1]);
+        kept_offset.push_back(static_cast<int>(kept.size()));
+    }
+    offset = std::move(kept_offset);
+    values = std::move(kept);
+}
+
 }  // namespace
 
 std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
@@ -366,18 +424,10 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     if (kept == n) return new_index;
     const double energy_before = energies_.kinetic() + energies_.stored();
 
-    // Cells, with their core vertex ranges.
+    // Cells, with their core vertex and anchor node ranges.
     CellArrays& c = cells_;
-    std::vector<int> core_offset(1, 0);
-    std::vector<Vec3> core_vertices;
-    for (int cell = 0; cell < n; ++cell) {
-        if (!keep_cell[cell]) continue;
-        core_vertices.insert(core_vertices.end(), c.core_vertices.begin() + c.core_vertex_offset[cell],
-                             c.core_vertices.begin() + c.core_vertex_offset[cell + 1]);
-        core_offset.push_back(static_cast<int>(core_vertices.size()));
-    }
-    c.core_vertex_offset = std::move(core_offset);
-    c.core_vertices = std::move(core_vertices);
+    keepFlaggedRanges(c.core_vertex_offset, c.core_vertices, keep_cell);
+    keepFlaggedRanges(c.anchor_node_offset, c.anchor_nodes, keep_cell);
     keepFlagged(c.position, keep_cell);
     keepFlagged(c.velocity, keep_cell);
     keepFlagged(c.orientation, keep_cell);
@@ -395,15 +445,25 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     InterfaceArrays& f = interfaces_;
     std::vector<char> keep_face(f.size()), keep_bond(bonds_.size(), 0);
     std::vector<int> bond_offset(1, 0);
+    std::vector<BondSoftening> softening;  // the pool, compacted in interface order
     for (int k = 0; k < f.size(); ++k) {
         keep_face[k] = keep_cell[f.cell_i[k]] && keep_cell[f.cell_j[k]];
         if (!keep_face[k]) continue;
         f.cell_i[k] = new_index[f.cell_i[k]];
         f.cell_j[k] = new_index[f.cell_j[k]];
+        const int n_bonds = f.bond_offset[k + 1] - f.bond_offset[k];
         for (int b = f.bond_offset[k]; b < f.bond_offset[k + 1]; ++b) keep_bond[b] = 1;
-        bond_offset.push_back(bond_offset.back() + f.bond_offset[k + 1] - f.bond_offset[k]);
+        bond_offset.push_back(bond_offset.back() + n_bonds);
+        if (f.softening_slot[k] >= 0) {
+            const int slot = static_cast<int>(softening.size());
+            softening.insert(softening.end(), bonds_.softening.begin() + f.softening_slot[k],
+                             bonds_.softening.begin() + f.softening_slot[k] + n_bonds);
+            f.softening_slot[k] = slot;
+        }
     }
     f.bond_offset = std::move(bond_offset);
+    bonds_.softening = std::move(softening);
+    keepFlagged(f.softening_slot, keep_face);
     keepFlagged(f.cell_i, keep_face);
     keepFlagged(f.cell_j, keep_face);
     keepFlagged(f.intact_bonds, keep_face);
@@ -417,15 +477,10 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(f.force_on_i, keep_face);
     keepFlagged(f.torque_on_i, keep_face);
     keepFlagged(f.torque_on_j, keep_face);
-    BondArrays& b = bonds_;
-    keepFlagged(b.anchor_i, keep_bond);
-    keepFlagged(b.anchor_j, keep_bond);
+    BondStorage& b = bonds_;
+    keepFlagged(b.node_i, keep_bond);
+    keepFlagged(b.node_j, keep_bond);
     keepFlagged(b.stage, keep_bond);
-    keepFlagged(b.onset_displacement, keep_bond);
-    keepFlagged(b.onset_stress, keep_bond);
-    keepFlagged(b.rupture_displacement, keep_bond);
-    keepFlagged(b.max_displacement, keep_bond);
-    keepFlagged(b.damage, keep_bond);
     counters_.bonds = b.size();
 
     // Contact histories: pairs and wall items of remaining cells, renumbered (the
@@ -449,11 +504,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(p.last_normal, keep_pair);
     keepFlagged(p.separation_margin, keep_pair);
     keepFlagged(p.force_on_b, keep_pair);
-    keepFlagged(p.torque_on_a, keep_pair);
-    keepFlagged(p.torque_on_b, keep_pair);
-    keepFlagged(p.elastic_energy, keep_pair);
-    keepFlagged(p.damping_power, keep_pair);
-    keepFlagged(p.friction_dissipation, keep_pair);
+    keepFlagged(p.contact_point, keep_pair);
     keepFlagged(p.status, keep_pair);
     WallContactArrays& w = wall_items_;
     std::vector<char> keep_item(w.size());
@@ -527,8 +578,12 @@ void DemModel::shrinkToFit()
     for (auto* v : {&f.cell_i, &f.cell_j, &f.bond_offset, &f.intact_bonds}) v->shrink_to_fit();
     for (auto* v : {&f.normal_i, &f.normal_j}) v->shrink_to_fit();
     for (auto* v : {&f.length_i, &f.length_j, &f.bond_area, &f.damping_beta}) v->shrink_to_fit();
-    bonds_.anchor_i.shrink_to_fit();
-    bonds_.anchor_j.shrink_to_fit();
+    f.softening_slot.shrink_to_fit();
+    c.anchor_node_offset.shrink_to_fit();
+    c.anchor_nodes.shrink_to_fit();
+    bonds_.node_i.shrink_to_fit();
+    bonds_.node_j.shrink_to_fit();
+    bonds_.stage.shrink_to_fit();
 }
 
 // ---- Bond strengths ---------------------------------------------------------
@@ -646,7 +701,7 @@ namespace {
 struct BondSystem {
     const CellArrays& cells;
     const InterfaceArrays& faces;
-    const BondArrays& bonds;
+    const BondStorage& bonds;
     const BondMaterial& material;
     std::vector<Mat3> rotation;
 
@@ -664,7 +719,10 @@ struct BondSystem {
             const double scale = faces.bond_area[k] / (faces.length_i[k] + faces.length_j[k]);
             for (int b = faces.bond_offset[k]; b < faces.bond_offset[k + 1]; ++b) {
                 if (bonds.stage[b] == bondBroken) continue;
-                const Vec3 ri = rotation[i] * bonds.anchor_i[b], rj = rotation[j] * bonds.anchor_j[b];
+                const Vec3 ri =
+                    rotation[i] * cells.anchor_nodes[cells.anchor_node_offset[i] + bonds.node_i[b]];
+                const Vec3 rj =
+                    rotation[j] * cells.anchor_nodes[cells.anchor_node_offset[j] + bonds.node_j[b]];
                 const Vec3 d = (u[j] + cross(theta[j], rj)) - (u[i] + cross(theta[i], ri));
                 const double dn = dot(d, normal);
                 const Vec3 f = scale * (material.normal_modulus * dn * normal +
@@ -711,7 +769,8 @@ CriticalTimeStep DemModel::criticalTimeStep() const
         const double ii = std::min({Ii.x, Ii.y, Ii.z}), ij = std::min({Ij.x, Ij.y, Ij.z});
         for (int b = interfaces_.bond_offset[k]; b < interfaces_.bond_offset[k + 1]; ++b) {
             if (bonds_.stage[b] == bondBroken) continue;
-            const double ri = norm(bonds_.anchor_i[b]), rj = norm(bonds_.anchor_j[b]);
+            const double ri = norm(cells_.anchor_nodes[cells_.anchor_node_offset[i] + bonds_.node_i[b]]);
+            const double rj = norm(cells_.anchor_nodes[cells_.anchor_node_offset[j] + bonds_.node_j[b]]);
             row_u[i] += stiffness * (1.0 / mi + 1.0 / std::sqrt(mi * mj));
             row_u[j] += stiffness * (1.0 / mj + 1.0 / std::sqrt(mi * mj));
             row_theta[i] += stiffness * (ri * ri / ii + ri * rj / std::sqrt(ii * ij));
@@ -858,14 +917,15 @@ void DemModel::rebuildNeighbourLists()
         next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
         next.last_normal.push_back(kept ? pairs_.last_normal[old] : Vec3{});
     }
+    // Most near pairs are still bonded and left out: give back what was reserved for them
+    // (about half the contact pairs' memory in an intact specimen).
+    for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->shrink_to_fit();
+    next.tangential_spring.shrink_to_fit();
+    next.last_normal.shrink_to_fit();
     const std::size_t m = next.cell_a.size();
     next.separation_margin.assign(m, 0.0);
     next.force_on_b.assign(m, Vec3{});
-    next.torque_on_a.assign(m, Vec3{});
-    next.torque_on_b.assign(m, Vec3{});
-    next.elastic_energy.assign(m, 0.0);
-    next.damping_power.assign(m, 0.0);
-    next.friction_dissipation.assign(m, 0.0);
+    next.contact_point.assign(m, Vec3{});
     next.status.assign(m, contactNone);
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
@@ -960,18 +1020,17 @@ BondKernelArgs DemModel::bondArgs()
     a.bond_area = interfaces_.bond_area.data();
     a.damping_beta = interfaces_.damping_beta.data();
     a.strength_scale = interfaces_.strength_scale.empty() ? nullptr : interfaces_.strength_scale.data();
+    a.softening_slot = interfaces_.softening_slot.data();
     a.intact_bonds = interfaces_.intact_bonds.data();
     a.force_on_i = interfaces_.force_on_i.data();
     a.torque_on_i = interfaces_.torque_on_i.data();
     a.torque_on_j = interfaces_.torque_on_j.data();
-    a.anchor_i_body = bonds_.anchor_i.data();
-    a.anchor_j_body = bonds_.anchor_j.data();
+    a.anchor_node_offset = cells_.anchor_node_offset.data();
+    a.anchor_nodes = cells_.anchor_nodes.data();
+    a.node_i = bonds_.node_i.data();
+    a.node_j = bonds_.node_j.data();
     a.stage = bonds_.stage.data();
-    a.onset_displacement = bonds_.onset_displacement.data();
-    a.onset_stress = bonds_.onset_stress.data();
-    a.rupture_displacement = bonds_.rupture_displacement.data();
-    a.max_displacement = bonds_.max_displacement.data();
-    a.damage = bonds_.damage.data();
+    a.softening = bonds_.softening.data();
     bond_block_sums_.resize((a.n_interfaces + a.block_size - 1) / a.block_size);
     a.block_sums = bond_block_sums_.data();
     return a;
@@ -995,6 +1054,22 @@ CellContactView DemModel::cellView() const
 void DemModel::runBondKernel(double dt)
 {
     bond_runner_(bondArgs());
+    // Interfaces whose first onset found no softening slot: claimed in interface order
+    // (deterministic whatever the thread count), then evaluated again, now stored.
+    int pending = 0;
+    for (const BondBlockSums& s : bond_block_sums_) pending += s.pending_onsets;
+    if (pending > 0) {
+        std::vector<int> onsets;
+        for (int k = 0; k < interfaces_.size(); ++k)
+            if (interfaces_.intact_bonds[k] == bondOnsetPending) {
+                claimSofteningSlot(k);
+                onsets.push_back(k);
+            }
+        BondKernelArgs again = bondArgs();
+        again.only_interfaces = onsets.data();
+        again.n_only = static_cast<int>(onsets.size());
+        bond_runner_(again);
+    }
     double strain = 0.0;
     for (const BondBlockSums& s : bond_block_sums_) {
         strain += s.strain_energy;
@@ -1056,10 +1131,13 @@ void DemModel::runContactKernels(double dt)
     pa.cell_b = pairs_.cell_b.data();
     pa.interface = pairs_.interface.data();
     pa.separation_margin = pairs_.separation_margin.data();
-    pa.items = itemOutputs(pairs_);
+    pa.items.tangential_spring = pairs_.tangential_spring.data();
+    pa.items.last_normal = pairs_.last_normal.data();
+    pa.items.status = pairs_.status.data();  // energies: block sums
     pa.force_on_b = pairs_.force_on_b.data();
-    pa.torque_on_a = pairs_.torque_on_a.data();
-    pa.torque_on_b = pairs_.torque_on_b.data();
+    pa.contact_point = pairs_.contact_point.data();
+    pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
+    pa.block_sums = pair_block_sums_.data();
     contact_runners_.pairs(pa);
 
     WallKernelArgs wa;
@@ -1081,7 +1159,14 @@ void DemModel::runContactKernels(double dt)
 
     energies_.contact_elastic = 0.0;
     counters_.core_intersections = 0;
-    counters_.contacts_active = sumContactEnergies(pairs_, dt, energies_, counters_.core_intersections);
+    counters_.contacts_active = 0;
+    for (const ContactBlockSums& s : pair_block_sums_) {
+        energies_.contact_elastic += s.elastic_energy;
+        energies_.contact_damping += s.damping_power * dt;
+        energies_.friction += s.friction_dissipation;
+        counters_.contacts_active += s.active;
+        counters_.core_intersections += s.cores_intersect;
+    }
     counters_.wall_contacts_active =
         sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
     for (WallState& w : walls_) {
@@ -1113,8 +1198,8 @@ GatherArgs DemModel::gatherArgs()
     a.pair_offset = cell_pair_offset_.data();
     a.pair_entries = cell_pairs_.data();
     a.pair_force_on_b = pairs_.force_on_b.data();
-    a.pair_torque_on_a = pairs_.torque_on_a.data();
-    a.pair_torque_on_b = pairs_.torque_on_b.data();
+    a.pair_contact_point = pairs_.contact_point.data();
+    a.position = cells_.position.data();
     a.wall_item_offset = cell_wall_item_offset_.data();
     a.wall_force_on_cell = wall_items_.force_on_cell.data();
     a.wall_torque_on_cell = wall_items_.torque_on_cell.data();
@@ -1329,11 +1414,15 @@ void DemModel::setBondHistory(const BondArrays& history)
     requireSize(history.max_displacement.size(), n, "bond maximum displacements");
     requireSize(history.damage.size(), n, "bond damage");
     bonds_.stage = history.stage;
-    bonds_.onset_displacement = history.onset_displacement;
-    bonds_.onset_stress = history.onset_stress;
-    bonds_.rupture_displacement = history.rupture_displacement;
-    bonds_.max_displacement = history.max_displacement;
-    bonds_.damage = history.damage;
+    std::vector<BondSoftening> per_bond(n);
+    for (int b = 0; b < n; ++b) {
+        per_bond[b].onset_displacement = history.onset_displacement[b];
+        per_bond[b].onset_stress = history.onset_stress[b];
+        per_bond[b].rupture_displacement = history.rupture_displacement[b];
+        per_bond[b].max_displacement = history.max_displacement[b];
+        per_bond[b].damage = history.damage[b];
+    }
+    setSofteningPerBond(per_bond);
     for (int k = 0; k < interfaces_.size(); ++k) {
         int intact = 0;
         for (int b = interfaces_.bond_offset[k]; b < interfaces_.bond_offset[k + 1]; ++b)
@@ -1341,6 +1430,76 @@ void DemModel::setBondHistory(const BondArrays& history)
         interfaces_.intact_bonds[k] = intact;
     }
     forces_valid_ = false;
+}
+
+BondArrays DemModel::bonds() const
+{
+    BondArrays out;
+    const int n = bonds_.size();
+    out.anchor_i.resize(n);
+    out.anchor_j.resize(n);
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const Vec3* nodes_i = cells_.anchor_nodes.data() + cells_.anchor_node_offset[interfaces_.cell_i[k]];
+        const Vec3* nodes_j = cells_.anchor_nodes.data() + cells_.anchor_node_offset[interfaces_.cell_j[k]];
+        for (int b = interfaces_.bond_offset[k]; b < interfaces_.bond_offset[k + 1]; ++b) {
+            out.anchor_i[b] = nodes_i[bonds_.node_i[b]];
+            out.anchor_j[b] = nodes_j[bonds_.node_j[b]];
+        }
+    }
+    out.stage = bonds_.stage;
+    const std::vector<BondSoftening> per_bond = softeningPerBond();
+    out.onset_displacement.resize(n);
+    out.onset_stress.resize(n);
+    out.rupture_displacement.resize(n);
+    out.max_displacement.resize(n);
+    out.damage.resize(n);
+    for (int b = 0; b < n; ++b) {
+        out.onset_displacement[b] = per_bond[b].onset_displacement;
+        out.onset_stress[b] = per_bond[b].onset_stress;
+        out.rupture_displacement[b] = per_bond[b].rupture_displacement;
+        out.max_displacement[b] = per_bond[b].max_displacement;
+        out.damage[b] = per_bond[b].damage;
+    }
+    return out;
+}
+
+std::vector<BondSoftening> DemModel::softeningPerBond() const
+{
+    std::vector<BondSoftening> per_bond(bonds_.size());
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const int slot = interfaces_.softening_slot[k];
+        if (slot < 0) continue;
+        const int first = interfaces_.bond_offset[k];
+        for (int b = first; b < interfaces_.bond_offset[k + 1]; ++b)
+            per_bond[b] = bonds_.softening[slot + (b - first)];
+    }
+    return per_bond;
+}
+
+void DemModel::setSofteningPerBond(const std::vector<BondSoftening>& per_bond)
+{
+    requireSize(per_bond.size(), bonds_.size(), "bond softening histories");
+    // Slots for the interfaces with a bond past its onset, in interface order.
+    bonds_.softening.clear();
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const int first = interfaces_.bond_offset[k], last = interfaces_.bond_offset[k + 1];
+        bool softened = false;
+        for (int b = first; b < last; ++b) softened = softened || bonds_.stage[b] != bondElastic;
+        interfaces_.softening_slot[k] = softened ? static_cast<int>(bonds_.softening.size()) : -1;
+        if (softened)
+            bonds_.softening.insert(bonds_.softening.end(), per_bond.begin() + first,
+                                    per_bond.begin() + last);
+    }
+}
+
+int DemModel::claimSofteningSlot(int k)
+{
+    if (interfaces_.softening_slot[k] < 0) {
+        interfaces_.softening_slot[k] = static_cast<int>(bonds_.softening.size());
+        bonds_.softening.resize(bonds_.softening.size() +
+                                (interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k]));
+    }
+    return interfaces_.softening_slot[k];
 }
 
 void DemModel::setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items)
@@ -1397,32 +1556,39 @@ Vec3 DemModel::angularMomentum(int c) const
     return rotationMatrix(cells_.orientation[c]) * Vec3{inertia.x * w.x, inertia.y * w.y, inertia.z * w.z};
 }
 
-std::size_t DemModel::memoryBytes() const
+DemMemoryBytes DemModel::memoryUse() const
 {
+    DemMemoryBytes m;
     const CellArrays& c = cells_;
-    std::size_t total = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) +
-                        bytes(c.angular_velocity) + bytes(c.force) + bytes(c.torque) + bytes(c.mass) +
-                        bytes(c.principal_inertia) + bytes(c.dilation_radius) + bytes(c.bounding_radius) +
-                        bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.initial_bond_count);
+    m.cells = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) + bytes(c.angular_velocity) +
+              bytes(c.force) + bytes(c.torque) + bytes(c.mass) + bytes(c.principal_inertia) +
+              bytes(c.dilation_radius) + bytes(c.bounding_radius) + bytes(c.initial_bond_count) +
+              bytes(rotation_) + bytes(angular_velocity_world_) + bytes(position_at_build_);
+    m.cores = bytes(c.core_vertex_offset) + bytes(c.core_vertices);
+    m.anchor_nodes = bytes(c.anchor_node_offset) + bytes(c.anchor_nodes);
     const InterfaceArrays& f = interfaces_;
-    total += bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
-             bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
-             bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) + bytes(f.force_on_i) +
-             bytes(f.torque_on_i) + bytes(f.torque_on_j);
-    const BondArrays& b = bonds_;
-    total += bytes(b.anchor_i) + bytes(b.anchor_j) + bytes(b.stage) + bytes(b.onset_displacement) +
-             bytes(b.onset_stress) + bytes(b.rupture_displacement) + bytes(b.max_displacement) +
-             bytes(b.damage);
+    m.interfaces = bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
+                   bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
+                   bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) +
+                   bytes(f.force_on_i) + bytes(f.torque_on_i) + bytes(f.torque_on_j) +
+                   bytes(f.softening_slot);
+    const BondStorage& b = bonds_;
+    m.bonds = bytes(b.node_i) + bytes(b.node_j) + bytes(b.stage);
+    m.softening = bytes(b.softening);
     const ContactPairArrays& p = pairs_;
-    total += bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
-             bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.force_on_b) + bytes(p.torque_on_a) +
-             bytes(p.torque_on_b) + bytes(p.elastic_energy) + bytes(p.damping_power) +
-             bytes(p.friction_dissipation) + bytes(p.status);
-    total += bytes(rotation_) + bytes(angular_velocity_world_) + bytes(cell_interface_offset_) +
-             bytes(cell_interfaces_) + bytes(cell_pair_offset_) + bytes(cell_pairs_) +
-             bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) + bytes(neighbour_cell_) +
-             bytes(neighbour_interface_) + bytes(position_at_build_);
-    return total;
+    m.pairs = bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
+              bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.force_on_b) +
+              bytes(p.contact_point) + bytes(p.status);
+    const WallContactArrays& w = wall_items_;
+    m.wall_items = bytes(w.cell) + bytes(w.wall) + bytes(w.triangle_offset) + bytes(w.triangles) +
+                   bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +
+                   bytes(w.torque_on_cell) + bytes(w.elastic_energy) + bytes(w.damping_power) +
+                   bytes(w.friction_dissipation) + bytes(w.wall_power) + bytes(w.status) +
+                   bytes(triangle_vertices_);
+    m.lists = bytes(cell_interface_offset_) + bytes(cell_interfaces_) + bytes(cell_pair_offset_) +
+              bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) +
+              bytes(neighbour_cell_) + bytes(neighbour_interface_);
+    return m;
 }
 
 }  // namespace rockfrac

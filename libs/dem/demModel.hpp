@@ -56,6 +56,24 @@ struct DemCounters {
     int shrunk_cores = 0;        // cells whose erosion failed (shrink fallback)
 };
 
+// What the model's arrays hold, by part [bytes] (bench/, docs/benchmarks.md).
+struct DemMemoryBytes {
+    std::size_t cells = 0;         // state, constants and per-step caches per cell
+    std::size_t cores = 0;         // eroded core vertices (contact geometry)
+    std::size_t anchor_nodes = 0;  // bond anchor nodes per cell
+    std::size_t interfaces = 0;    // per bonded cell pair, incl. its force/torque sums
+    std::size_t bonds = 0;         // per bond: two node indices and the stage
+    std::size_t softening = 0;     // the softening pool (bonds past their onset)
+    std::size_t pairs = 0;         // contact candidates with their histories
+    std::size_t wall_items = 0;    // cell–wall candidates and the wall triangles
+    std::size_t lists = 0;         // per-cell gather and neighbour lists
+
+    std::size_t total() const
+    {
+        return cells + cores + anchor_nodes + interfaces + bonds + softening + pairs + wall_items + lists;
+    }
+};
+
 // The explicit stability limit of the current model (docs/theory-dem.md §2).
 struct CriticalTimeStep {
     double value = 0.0;                   // the smaller of bond and contact [s]
@@ -139,7 +157,12 @@ public:
 
     // ---- State (read for output and restart; write back for restart) --------
     const CellArrays& cells() const { return cells_; }
-    const BondArrays& bonds() const { return bonds_; }
+    // Every bond with its anchors and history, assembled from the compact storage
+    // (O(bonds): for output, restart and tests, not for a loop).
+    BondArrays bonds() const;
+    int nBonds() const { return bonds_.size(); }
+    const std::vector<unsigned char>& bondStages() const { return bonds_.stage; }  // BondStage per bond
+    const BondStorage& bondStorage() const { return bonds_; }  // the compact form bonds() expands
     const InterfaceArrays& interfaces() const { return interfaces_; }
     const ContactPairArrays& contactPairs() const { return pairs_; }
     const WallContactArrays& wallContacts() const { return wall_items_; }
@@ -159,7 +182,7 @@ public:
     // bitwise as if never interrupted (else forces are recomputed at the restart state,
     // with the dashpots seeing end-of-step instead of mid-step velocities).
     void setCellForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
-    void setBondHistory(const BondArrays& history);  // anchors are kept; history fields replaced
+    void setBondHistory(const BondArrays& history);  // anchors are kept; stages and histories replaced
     void setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items);
     void setWallState(int wall, const WallState& state);
     void setClock(double time, long steps, const DemEnergies& energies, double initial_balance);
@@ -176,8 +199,9 @@ public:
     std::vector<double> cellDamage() const;
     // Angular momentum of cell c about its centroid, world frame.
     Vec3 angularMomentum(int c) const;
-    // Estimated memory of the state arrays [bytes].
-    std::size_t memoryBytes() const;
+    // Memory of the state arrays [bytes] (capacities), by part, and in all.
+    DemMemoryBytes memoryUse() const;
+    std::size_t memoryBytes() const { return memoryUse().total(); }
 
 private:
     // The CUDA backend mirrors step() with device kernels and uses this model for
@@ -207,6 +231,11 @@ private:
     void kick(double dt);
     void moveWalls(double dt);
     BondKernelArgs bondArgs();
+    // The softening history with one entry per bond (elastic bonds: zeros), and back:
+    // slots are claimed for every interface with a bond past its onset.
+    std::vector<BondSoftening> softeningPerBond() const;
+    void setSofteningPerBond(const std::vector<BondSoftening>& per_bond);
+    int claimSofteningSlot(int interface);
     GatherArgs gatherArgs();
     IntegrationArgs integrationArgs();
     CellContactView cellView() const;
@@ -224,7 +253,7 @@ private:
 
     CellArrays cells_;
     InterfaceArrays interfaces_;
-    BondArrays bonds_;
+    BondStorage bonds_;
     ContactPairArrays pairs_;
     WallContactArrays wall_items_;
     std::vector<WallState> walls_;
@@ -252,6 +281,7 @@ private:
 
     // Deterministic block sums.
     std::vector<BondBlockSums> bond_block_sums_;
+    std::vector<ContactBlockSums> pair_block_sums_;
     struct CellBlockSums {
         double kinetic_translation = 0.0, kinetic_rotation = 0.0, gravity_work = 0.0;
         double max_displacement2 = 0.0;

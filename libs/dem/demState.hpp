@@ -4,9 +4,11 @@
 //
 // Frames: "body" is the cell's principal frame (origin at the centroid, axes the
 // principal axes of inertia); x_world = position + R(orientation) x_body.
+#include <cstdint>
 #include <vector>
 
 #include "core/vec3.hpp"
+#include "dem/bondLaw.hpp"
 #include "dem/contactLaw.hpp"
 #include "dem/quat.hpp"
 
@@ -28,6 +30,11 @@ struct CellArrays {
     std::vector<double> bounding_radius;  // of the dilated core about the centroid [m]
     std::vector<int> core_vertex_offset;  // core of cell c: [offset[c], offset[c+1])
     std::vector<Vec3> core_vertices;      // eroded cell, body frame [m]
+    // The face nodes the cell's bonds are anchored at, each once (a node is shared by
+    // the bonds of up to three faces of the cell), body frame [m]: cell c's are
+    // [anchor_node_offset[c], anchor_node_offset[c+1]).
+    std::vector<int> anchor_node_offset;
+    std::vector<Vec3> anchor_nodes;
     std::vector<int> initial_bond_count;  // bonds the cell started with
 
     int size() const { return static_cast<int>(mass.size()); }
@@ -45,11 +52,28 @@ struct InterfaceArrays {
     // Factor on sigma-bar and C of the interface's bonds (model effects: weakened contact
     // zones, random strengths). Empty = 1 everywhere, so a plain model carries no array.
     std::vector<double> strength_scale;
+    // The softening pool entries of the interface's bonds are [slot, slot + bonds); -1
+    // while every bond of the interface is elastic (claimed at the first onset).
+    std::vector<int> softening_slot;
     std::vector<Vec3> force_on_i, torque_on_i, torque_on_j;  // sums over the interface's bonds
 
     int size() const { return static_cast<int>(cell_i.size()); }
 };
 
+// Bonds as the model stores them: each end names one of its cell's anchor nodes, the
+// stage is per bond, and the softening history lives in a pool (InterfaceArrays::
+// softening_slot) that only interfaces past an onset use: 5 bytes per intact bond
+// instead of 89 (docs/benchmarks.md, memory per cell).
+struct BondStorage {
+    std::vector<std::uint16_t> node_i, node_j;  // into the anchor nodes of cell i and of cell j
+    std::vector<unsigned char> stage;           // BondStage
+    std::vector<BondSoftening> softening;       // the pool
+
+    int size() const { return static_cast<int>(stage.size()); }
+};
+
+// Every bond with its anchors and full history, one entry per bond: what restart files,
+// VTK output and tests exchange with the model (DemModel::bonds(), setBondHistory()).
 struct BondArrays {
     std::vector<Vec3> anchor_i, anchor_j;  // anchor points in the body frames of cells i and j [m]
     // Damage history (Algorithm 1); stage: BondStage (elastic = "init" still true).
@@ -68,9 +92,9 @@ struct ContactPairArrays {
     std::vector<int> cell_a, cell_b, interface;
     std::vector<Vec3> tangential_spring, last_normal;  // history, carried across rebuilds by (a, b)
     std::vector<double> separation_margin;             // GJK skipping (reset at rebuilds)
-    std::vector<Vec3> force_on_b, torque_on_a, torque_on_b;
-    std::vector<double> elastic_energy, damping_power, friction_dissipation;
-    std::vector<unsigned char> status;  // ContactStatus
+    std::vector<Vec3> force_on_b;                      // on cell b (a gets the opposite) [N]
+    std::vector<Vec3> contact_point;    // where it acts, world [m] (the gather forms the torques)
+    std::vector<unsigned char> status;  // ContactStatus (energies: summed per block, not stored)
 
     int size() const { return static_cast<int>(cell_a.size()); }
 };

@@ -288,7 +288,7 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     model.setCellState(s.vectors("cell.position", nCells), s.vectors("cell.velocity", nCells), orientation,
                        s.vectors("cell.angularVelocity", nCells));
 
-    const long nBonds = model.bonds().size();
+    const long nBonds = model.nBonds();
     BondArrays b = model.bonds();
     const auto& stage = s.bytes("bond.stage", nBonds);
     b.stage.assign(stage.begin(), stage.end());

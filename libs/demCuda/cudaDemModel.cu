@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -206,8 +207,9 @@ __global__ void __launch_bounds__(threads_per_block) pairKernelCuda(PairKernelAr
     const int p = blockIdx.x * blockDim.x + threadIdx.x;
     ContactSums s{0.0, 0.0, 0.0, 0, 0};
     if (p < a.n_pairs) {
-        pairKernel<Law>(a, p);
-        s = contactTerms(a.items, p);
+        ContactBlockSums t;
+        pairKernel<Law>(a, p, t);
+        s = {t.elastic_energy, t.damping_power, t.friction_dissipation, t.active, t.cores_intersect};
     }
     blockSum(s, partials);
 }
@@ -316,14 +318,18 @@ struct CudaDemModel::Buffers {
     DeviceArray<Vec3> normal_i, normal_j, force_on_i, torque_on_i, torque_on_j;
     DeviceArray<double> length_i, length_j, bond_area, damping_beta;
     DeviceArray<double> strength_scale;  // empty when no model effect scales the strengths
-    DeviceArray<Vec3> anchor_i, anchor_j;
+    // Bonds: the host's anchor nodes, and the softening history with one entry per bond
+    // (slot of interface k = its first bond), so the device never claims a slot.
+    DeviceArray<int> anchor_node_offset, softening_slot;
+    DeviceArray<Vec3> anchor_nodes;
+    DeviceArray<std::uint16_t> node_i, node_j;
     DeviceArray<unsigned char> stage;
-    DeviceArray<double> onset_displacement, onset_stress, rupture_displacement, max_displacement, damage;
+    DeviceArray<BondSoftening> softening;
     DeviceArray<int> cell_interface_offset, cell_interfaces;
     // Contact pairs.
     DeviceArray<int> pair_a, pair_b, pair_interface, cell_pair_offset, cell_pairs;
-    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_torque_on_a, pair_torque_on_b;
-    DeviceArray<double> pair_margin, pair_elastic, pair_damping, pair_friction;
+    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_contact_point;
+    DeviceArray<double> pair_margin;
     DeviceArray<unsigned char> pair_status;
     // Wall items and walls.
     DeviceArray<int> item_cell, item_wall, item_triangle_offset, item_triangles, cell_wall_item_offset;
@@ -371,14 +377,13 @@ struct CudaDemModel::Buffers {
                               bond_area.bytes(),
                               damping_beta.bytes(),
                               strength_scale.bytes(),
-                              anchor_i.bytes(),
-                              anchor_j.bytes(),
+                              anchor_node_offset.bytes(),
+                              softening_slot.bytes(),
+                              anchor_nodes.bytes(),
+                              node_i.bytes(),
+                              node_j.bytes(),
                               stage.bytes(),
-                              onset_displacement.bytes(),
-                              onset_stress.bytes(),
-                              rupture_displacement.bytes(),
-                              max_displacement.bytes(),
-                              damage.bytes(),
+                              softening.bytes(),
                               cell_interface_offset.bytes(),
                               cell_interfaces.bytes(),
                               pair_a.bytes(),
@@ -389,12 +394,8 @@ struct CudaDemModel::Buffers {
                               pair_spring.bytes(),
                               pair_last_normal.bytes(),
                               pair_force_on_b.bytes(),
-                              pair_torque_on_a.bytes(),
-                              pair_torque_on_b.bytes(),
+                              pair_contact_point.bytes(),
                               pair_margin.bytes(),
-                              pair_elastic.bytes(),
-                              pair_damping.bytes(),
-                              pair_friction.bytes(),
                               pair_status.bytes(),
                               item_cell.bytes(),
                               item_wall.bytes(),
@@ -504,19 +505,18 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
     total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
              arrayBytes(f.intact_bonds) + arrayBytes(f.normal_i) + arrayBytes(f.normal_j) +
              arrayBytes(f.length_i) + arrayBytes(f.length_j) + arrayBytes(f.bond_area) +
-             arrayBytes(f.damping_beta) + arrayBytes(f.strength_scale) + arrayBytes(f.force_on_i) + arrayBytes(f.torque_on_i) +
-             arrayBytes(f.torque_on_j);
-    const BondArrays& b = host.bonds_;
-    total += arrayBytes(b.anchor_i) + arrayBytes(b.anchor_j) + arrayBytes(b.stage) +
-             arrayBytes(b.onset_displacement) + arrayBytes(b.onset_stress) +
-             arrayBytes(b.rupture_displacement) + arrayBytes(b.max_displacement) + arrayBytes(b.damage);
+             arrayBytes(f.damping_beta) + arrayBytes(f.strength_scale) + arrayBytes(f.force_on_i) +
+             arrayBytes(f.torque_on_i) + arrayBytes(f.torque_on_j);
+    const BondStorage& b = host.bonds_;
+    total += arrayBytes(c.anchor_node_offset) + arrayBytes(c.anchor_nodes) + arrayBytes(f.softening_slot) +
+             arrayBytes(b.node_i) + arrayBytes(b.node_j) + arrayBytes(b.stage) +
+             b.stage.size() * sizeof(BondSoftening);
     total += arrayBytes(host.cell_interface_offset_) + arrayBytes(host.cell_interfaces_);
     const ContactPairArrays& p = host.pairs_;
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
              arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) +
-             arrayBytes(p.force_on_b) + arrayBytes(p.torque_on_a) + arrayBytes(p.torque_on_b) +
-             arrayBytes(p.elastic_energy) + arrayBytes(p.damping_power) + arrayBytes(p.friction_dissipation) +
-             arrayBytes(p.status) + arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
+             arrayBytes(p.force_on_b) + arrayBytes(p.contact_point) + arrayBytes(p.status) +
+             arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
     total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
              arrayBytes(w.triangles) + arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) +
@@ -569,15 +569,14 @@ void CudaDemModel::upload()
     d.force_on_i.upload(f.force_on_i);
     d.torque_on_i.upload(f.torque_on_i);
     d.torque_on_j.upload(f.torque_on_j);
-    const BondArrays& b = host_.bonds_;
-    d.anchor_i.upload(b.anchor_i);
-    d.anchor_j.upload(b.anchor_j);
+    const BondStorage& b = host_.bonds_;
+    d.anchor_node_offset.upload(c.anchor_node_offset);
+    d.anchor_nodes.upload(c.anchor_nodes);
+    d.node_i.upload(b.node_i);
+    d.node_j.upload(b.node_j);
     d.stage.upload(b.stage);
-    d.onset_displacement.upload(b.onset_displacement);
-    d.onset_stress.upload(b.onset_stress);
-    d.rupture_displacement.upload(b.rupture_displacement);
-    d.max_displacement.upload(b.max_displacement);
-    d.damage.upload(b.damage);
+    d.softening.upload(host_.softeningPerBond());
+    d.softening_slot.upload(std::vector<int>(f.bond_offset.begin(), f.bond_offset.end() - 1));
     d.cell_interface_offset.upload(host_.cell_interface_offset_);
     d.cell_interfaces.upload(host_.cell_interfaces_);
     d.triangle_vertices.upload(host_.triangle_vertices_);
@@ -599,11 +598,7 @@ void CudaDemModel::uploadLists()
     d.pair_last_normal.upload(p.last_normal);
     d.pair_margin.upload(p.separation_margin);
     d.pair_force_on_b.upload(p.force_on_b);
-    d.pair_torque_on_a.upload(p.torque_on_a);
-    d.pair_torque_on_b.upload(p.torque_on_b);
-    d.pair_elastic.upload(p.elastic_energy);
-    d.pair_damping.upload(p.damping_power);
-    d.pair_friction.upload(p.friction_dissipation);
+    d.pair_contact_point.upload(p.contact_point);
     d.pair_status.upload(p.status);
     d.cell_pair_offset.upload(host_.cell_pair_offset_);
     d.cell_pairs.upload(host_.cell_pairs_);
@@ -660,23 +655,16 @@ void CudaDemModel::downloadState()
     d.force_on_i.download(f.force_on_i);
     d.torque_on_i.download(f.torque_on_i);
     d.torque_on_j.download(f.torque_on_j);
-    BondArrays& b = host_.bonds_;
-    d.stage.download(b.stage);
-    d.onset_displacement.download(b.onset_displacement);
-    d.onset_stress.download(b.onset_stress);
-    d.rupture_displacement.download(b.rupture_displacement);
-    d.max_displacement.download(b.max_displacement);
-    d.damage.download(b.damage);
+    d.stage.download(host_.bonds_.stage);
+    std::vector<BondSoftening> per_bond;
+    d.softening.download(per_bond);
+    host_.setSofteningPerBond(per_bond);
     ContactPairArrays& p = host_.pairs_;
     d.pair_spring.download(p.tangential_spring);
     d.pair_last_normal.download(p.last_normal);
     d.pair_margin.download(p.separation_margin);
     d.pair_force_on_b.download(p.force_on_b);
-    d.pair_torque_on_a.download(p.torque_on_a);
-    d.pair_torque_on_b.download(p.torque_on_b);
-    d.pair_elastic.download(p.elastic_energy);
-    d.pair_damping.download(p.damping_power);
-    d.pair_friction.download(p.friction_dissipation);
+    d.pair_contact_point.download(p.contact_point);
     d.pair_status.download(p.status);
     WallContactArrays& w = host_.wall_items_;
     d.item_spring.download(w.tangential_spring);
@@ -723,18 +711,17 @@ void CudaDemModel::computeForces(double dt)
     ba.bond_area = d.bond_area.data();
     ba.damping_beta = d.damping_beta.data();
     ba.strength_scale = d.strength_scale.size() > 0 ? d.strength_scale.data() : nullptr;
+    ba.softening_slot = d.softening_slot.data();
     ba.intact_bonds = d.intact_bonds.data();
     ba.force_on_i = d.force_on_i.data();
     ba.torque_on_i = d.torque_on_i.data();
     ba.torque_on_j = d.torque_on_j.data();
-    ba.anchor_i_body = d.anchor_i.data();
-    ba.anchor_j_body = d.anchor_j.data();
+    ba.anchor_node_offset = d.anchor_node_offset.data();
+    ba.anchor_nodes = d.anchor_nodes.data();
+    ba.node_i = d.node_i.data();
+    ba.node_j = d.node_j.data();
     ba.stage = d.stage.data();
-    ba.onset_displacement = d.onset_displacement.data();
-    ba.onset_stress = d.onset_stress.data();
-    ba.rupture_displacement = d.rupture_displacement.data();
-    ba.max_displacement = d.max_displacement.data();
-    ba.damage = d.damage.data();
+    ba.softening = d.softening.data();
     const int bond_blocks = blocksFor(ba.n_interfaces);
     if (bond_blocks > 0)
         bondKernel<BondLawOnDevice><<<bond_blocks, threads_per_block>>>(ba, d.bond_sums.data());
@@ -787,11 +774,10 @@ void CudaDemModel::computeForces(double dt)
     pa.cell_b = d.pair_b.data();
     pa.interface = d.pair_interface.data();
     pa.separation_margin = d.pair_margin.data();
-    pa.items = {d.pair_spring.data(),  d.pair_last_normal.data(), d.pair_elastic.data(),
-                d.pair_damping.data(), d.pair_friction.data(),    d.pair_status.data()};
+    pa.items = {d.pair_spring.data(), d.pair_last_normal.data(), nullptr, nullptr, nullptr,
+                d.pair_status.data()};  // energies: summed per thread, not stored
     pa.force_on_b = d.pair_force_on_b.data();
-    pa.torque_on_a = d.pair_torque_on_a.data();
-    pa.torque_on_b = d.pair_torque_on_b.data();
+    pa.contact_point = d.pair_contact_point.data();
     const int pair_blocks = blocksFor(pa.n_pairs);
     if (pair_blocks > 0)
         pairKernelCuda<ContactLawOnDevice><<<pair_blocks, threads_per_block>>>(pa, d.pair_sums.data());
@@ -864,8 +850,8 @@ void CudaDemModel::computeForces(double dt)
     ga.pair_offset = d.cell_pair_offset.data();
     ga.pair_entries = d.cell_pairs.data();
     ga.pair_force_on_b = d.pair_force_on_b.data();
-    ga.pair_torque_on_a = d.pair_torque_on_a.data();
-    ga.pair_torque_on_b = d.pair_torque_on_b.data();
+    ga.pair_contact_point = d.pair_contact_point.data();
+    ga.position = d.position.data();
     ga.wall_item_offset = d.cell_wall_item_offset.data();
     ga.wall_force_on_cell = d.item_force.data();
     ga.wall_torque_on_cell = d.item_torque.data();

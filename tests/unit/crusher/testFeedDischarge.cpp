@@ -76,6 +76,34 @@ void checkConsistent(const DemModel& model)
         REQUIRE(static_cast<int>(size) == b.size());
     REQUIRE(model.counters().bonds == b.size());
 
+    // The compact storage behind bonds(): anchor nodes per cell, node indices within
+    // their cell's list, and softening slots exactly for interfaces past an onset,
+    // each inside the pool and none overlapping another.
+    const BondStorage& storage = model.bondStorage();
+    REQUIRE(static_cast<int>(c.anchor_node_offset.size()) == n + 1);
+    REQUIRE(c.anchor_node_offset.back() == static_cast<int>(c.anchor_nodes.size()));
+    REQUIRE(static_cast<int>(f.softening_slot.size()) == f.size());
+    for (auto size : {storage.node_i.size(), storage.node_j.size(), storage.stage.size()})
+        REQUIRE(static_cast<int>(size) == b.size());
+    std::vector<char> pool_used(storage.softening.size(), 0);
+    for (int k = 0; k < f.size(); ++k) {
+        bool softened = false;
+        for (int e = f.bond_offset[k]; e < f.bond_offset[k + 1]; ++e) {
+            REQUIRE(storage.node_i[e] <
+                    c.anchor_node_offset[f.cell_i[k] + 1] - c.anchor_node_offset[f.cell_i[k]]);
+            REQUIRE(storage.node_j[e] <
+                    c.anchor_node_offset[f.cell_j[k] + 1] - c.anchor_node_offset[f.cell_j[k]]);
+            softened = softened || storage.stage[e] != bondElastic;
+        }
+        if (softened) REQUIRE(f.softening_slot[k] >= 0);
+        if (f.softening_slot[k] < 0) continue;
+        for (int e = 0; e < f.bond_offset[k + 1] - f.bond_offset[k]; ++e) {
+            REQUIRE(f.softening_slot[k] + e < static_cast<int>(pool_used.size()));
+            REQUIRE(!pool_used[f.softening_slot[k] + e]);
+            pool_used[f.softening_slot[k] + e] = 1;
+        }
+    }
+
     const ContactPairArrays& p = model.contactPairs();
     for (int k = 0; k < p.size(); ++k) {
         REQUIRE(0 <= p.cell_a[k]);
@@ -116,7 +144,7 @@ TEST_CASE("inserted cells: the body frames, masses and bonds of the mesh, placed
     const int first = model.insertCells(mesh, {shift, q, {}, {}});
     CHECK(first == 0);
     REQUIRE(model.cells().size() == mesh.nCells());
-    CHECK(model.bonds().size() == reference.bonds().size());
+    CHECK(model.nBonds() == reference.nBonds());
     CHECK(model.interfaces().size() == reference.interfaces().size());
     const Mat3 R = rotationMatrix(q);
     for (int c = 0; c < mesh.nCells(); ++c) {
@@ -200,7 +228,7 @@ TEST_CASE("insert/remove cycles keep every index consistent; remaining clusters 
     for (int c = 0; c < 20; ++c) remove_fresh[c] = c % 3 == 0;
     fresh.removeCells(remove_fresh);
     REQUIRE(fresh.cells().size() == model.cells().size());
-    REQUIRE(fresh.bonds().size() == model.bonds().size());
+    REQUIRE(fresh.nBonds() == model.nBonds());
     fresh.setCellState(model.cells().position, model.cells().velocity, model.cells().orientation,
                        model.cells().angular_velocity);
     fresh.setBondHistory(model.bonds());

@@ -61,7 +61,7 @@ struct ImposedBond {
         test::evaluateForces(model, 0.0);
         return model.cells().force[0];
     }
-    const BondArrays& bonds() const { return model.bonds(); }
+    BondArrays bonds() const { return model.bonds(); }
 };
 
 double qnsc(const DemParameters& p, double sigma, double tau)

@@ -173,7 +173,7 @@ TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]
     for (int i = 0; i < n_steps; ++i) test::step(model, dt);
     const double seconds = omp_get_wtime() - start;
     const int n_cells = model.cells().size();
-    WARN("cells " << n_cells << ", bonds per cell " << double(model.bonds().size()) / n_cells << ", threads "
+    WARN("cells " << n_cells << ", bonds per cell " << double(model.nBonds()) / n_cells << ", threads "
                   << omp_get_max_threads() << ": " << n_cells * double(n_steps) / seconds << " cell-steps/s, "
                   << double(model.memoryBytes()) / n_cells << " bytes/cell, rebuilds "
                   << model.counters().neighbour_rebuilds);

@@ -264,7 +264,7 @@ TEST_CASE("bond order and body frames are DemModel's", "[fragments]")
 
     const auto bond_cells = demBondCells(mesh);
     const InterfaceArrays& faces = model.interfaces();
-    REQUIRE(static_cast<int>(bond_cells.size()) == model.bonds().size());
+    REQUIRE(static_cast<int>(bond_cells.size()) == model.nBonds());
     for (int k = 0; k < faces.size(); ++k)
         for (int b = faces.bond_offset[k]; b < faces.bond_offset[k + 1]; ++b) {
             CHECK(bond_cells[b][0] == faces.cell_i[k]);
