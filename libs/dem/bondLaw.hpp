@@ -245,6 +245,32 @@ RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
     return true;
 }
 
+// Start loading what interface k will read from its second cell: interfaces are sorted by
+// their first cell, so cell i's data streams through the cache, but cell j is anywhere in
+// memory and its anchor nodes (indexed through node_j) would otherwise be waited for on
+// every bond (measured: 2x slower steps at 10^4 cells without this). CPU only.
+// GCC deletes a loop of __builtin_prefetch as a loop without side effects; the asm
+// statement is kept.
+inline void prefetchLine(const void* p)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
+#else
+    __builtin_prefetch(p);
+#endif
+}
+
+inline void prefetchInterface(const BondKernelArgs& a, int k)
+{
+    const int cj = a.cell_j[k];
+    const Vec3* nodes = a.anchor_nodes + a.anchor_node_offset[cj];
+    for (int b = a.bond_offset[k]; b < a.bond_offset[k + 1]; ++b) prefetchLine(nodes + a.node_j[b]);
+    prefetchLine(a.rotation + cj);
+    prefetchLine(a.position + cj);
+    prefetchLine(a.velocity + cj);
+    prefetchLine(a.angular_velocity_world + cj);
+}
+
 // The OpenMP loop over blocks of interfaces (static schedule; a block's sums do
 // not depend on the thread count), or the serial second pass over only_interfaces.
 template <class Law>
@@ -263,7 +289,12 @@ void runBondKernel(const BondKernelArgs& a)
         BondBlockSums sums;
         const int end =
             a.n_interfaces < (block + 1) * a.block_size ? a.n_interfaces : (block + 1) * a.block_size;
-        for (int k = block * a.block_size; k < end; ++k) bondInterfaceKernel<Law>(a, k, sums);
+        // Two interfaces ahead: the anchor-node offset of cell j, then its nodes.
+        for (int k = block * a.block_size; k < end; ++k) {
+            if (k + 4 < a.n_interfaces) prefetchLine(a.anchor_node_offset + a.cell_j[k + 4]);
+            if (k + 2 < a.n_interfaces) prefetchInterface(a, k + 2);
+            bondInterfaceKernel<Law>(a, k, sums);
+        }
         a.block_sums[block] = sums;
     }
 }

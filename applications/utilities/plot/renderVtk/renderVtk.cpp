@@ -6,7 +6,9 @@
 // high, as in the paper's damage figures), with a scalar bar, and writes a PNG
 // atomically. It needs an X display: the rockfrac scripts run it under xvfb-run
 // when no DISPLAY is set. The camera looks along -y by default (the face of a
-// Brazilian disc; plates are horizontal).
+// Brazilian disc; plates are horizontal). Beside the PNG it writes a ParaView state
+// (<name>-paraview.py: same file, field, colour range and camera), so the picture of
+// a report can be opened in ParaView and explored from the same view.
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
@@ -32,6 +34,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 #include "core/application.hpp"
 #include "core/atomicFile.hpp"
@@ -53,7 +57,8 @@ const AppInfo info{
      {"-view", "x|y|z|iso", "look along -x, -y (default), -z, or obliquely"},
      {"-range", "'lo hi'", "colour range (default: the field's range)"},
      {"-title", "text", "title printed on the picture"},
-     {"-size", "'w h'", "image size in pixels (default 900 700)"}},
+     {"-size", "'w h'", "image size in pixels (default 900 700)"},
+     {"-noState", "", "do not write the ParaView state <out>-paraview.py beside the PNG"}},
     1,
     1,
     false,
@@ -75,6 +80,97 @@ vtkSmartPointer<vtkDataSet> readDataSet(const fs::path& file)
         return vtkSmartPointer<vtkDataSet>(reader->GetOutput());
     }
     throw UserError("'" + file.string() + "' is neither .vtu nor .vtp");
+}
+
+// A Python string literal (the paths and texts of the state file).
+std::string pythonString(const std::string& text)
+{
+    std::string quoted = "'";
+    for (char c : text) {
+        if (c == '\\' || c == '\'') quoted += '\\';
+        if (c == '\n') {
+            quoted += "\\n";
+            continue;
+        }
+        quoted += c;
+    }
+    return quoted + "'";
+}
+
+std::string pythonVector(const double* v, int n)
+{
+    std::ostringstream s;
+    s.precision(17);
+    s << '[';
+    for (int i = 0; i < n; ++i) s << (i ? ", " : "") << v[i];
+    return s.str() + ']';
+}
+
+// What the picture shows, for the ParaView state.
+struct PictureSettings {
+    fs::path input, png;
+    std::string field;  // empty: grey
+    bool cell_field = true, vector_field = false;
+    double range[2] = {0.0, 1.0};
+    std::string title;
+    int width = 900, height = 700;
+};
+
+// A ParaView Python state (paraview.simple, ParaView 5.9 or later): File > Load State
+// opens it in the GUI; 'pvpython <file> picture.png' (or pvbatch) renders it again.
+std::string paraviewState(const PictureSettings& p, vtkCamera* camera)
+{
+    std::ostringstream s;
+    s.precision(17);
+    const std::string input = fs::absolute(p.input).lexically_normal().string();
+    s << "# ParaView state written by renderVtk for " << p.png.filename().string() << ": the same file,\n"
+      << "# field, colour range and camera. In ParaView: File > Load State, choose this file\n"
+      << "# (Python state). Headless: pvpython " << p.png.stem().string() << "-paraview.py picture.png\n"
+      << "# The data file is named by its absolute path; edit FileName if the case moved.\n"
+      << "import sys\n"
+      << "from paraview.simple import *\n\n"
+      << "source = " << (p.input.extension() == ".vtp" ? "XMLPolyDataReader" : "XMLUnstructuredGridReader")
+      << "(registrationName=" << pythonString(p.input.filename().string())
+      << ", FileName=[" << pythonString(input) << "])\n"
+      << "view = GetActiveViewOrCreate('RenderView')\n"
+      << "view.ViewSize = [" << p.width << ", " << p.height << "]\n"
+      << "view.OrientationAxesVisibility = 0\n"
+      << "if hasattr(view, 'UseColorPaletteForBackground'):\n"
+      << "    view.UseColorPaletteForBackground = 0\n"
+      << "view.Background = [1.0, 1.0, 1.0]\n"
+      << "display = Show(source, view)\n"
+      << "display.SetRepresentationType('Surface With Edges')\n"
+      << "display.EdgeColor = [0.2, 0.2, 0.2]\n"
+      << "display.DiffuseColor = [0.8, 0.8, 0.8]\n";
+    if (!p.field.empty()) {
+        s << "ColorBy(display, (" << (p.cell_field ? "'CELLS'" : "'POINTS'") << ", " << pythonString(p.field)
+          << (p.vector_field ? ", 'Magnitude'" : "") << "))\n"
+          << "lut = GetColorTransferFunction(" << pythonString(p.field) << ")\n"
+          << "lut.ApplyPreset('Blue to Red Rainbow', True)\n"
+          << "lut.AutomaticRescaleRangeMode = 'Never'\n"
+          << "lut.RescaleTransferFunction(" << p.range[0] << ", " << p.range[1] << ")\n"
+          << "display.SetScalarBarVisibility(view, True)\n"
+          << "bar = GetScalarBar(lut, view)\n"
+          << "bar.Title = " << pythonString(p.field) << "\n"
+          << "bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]\n";
+    }
+    if (!p.title.empty())
+        s << "title = Text(Text=" << pythonString(p.title) << ")\n"
+          << "titleDisplay = Show(title, view)\n"
+          << "titleDisplay.Color = [0.0, 0.0, 0.0]\n"
+          << "titleDisplay.WindowLocation = 'Lower Left Corner'\n";
+    double position[3], focal[3], up[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    camera->GetViewUp(up);
+    s << "view.CameraPosition = " << pythonVector(position, 3) << "\n"
+      << "view.CameraFocalPoint = " << pythonVector(focal, 3) << "\n"
+      << "view.CameraViewUp = " << pythonVector(up, 3) << "\n"
+      << "view.CameraViewAngle = " << camera->GetViewAngle() << "\n"
+      << "Render(view)\n"
+      << "if len(sys.argv) > 1 and sys.argv[1].endswith('.png'):\n"
+      << "    SaveScreenshot(sys.argv[1], view, ImageResolution=[" << p.width << ", " << p.height << "])\n";
+    return s.str();
 }
 
 }  // namespace
@@ -105,6 +201,9 @@ int main(int argc, char** argv)
         mapper->SetLookupTable(colours);
         mapper->ScalarVisibilityOff();
 
+        PictureSettings picture;
+        picture.input = input;
+        picture.png = out;
         vtkNew<vtkRenderer> renderer;
         renderer->SetBackground(1, 1, 1);
         if (const auto field = app.optionIf("-field")) {
@@ -125,6 +224,11 @@ int main(int argc, char** argv)
             mapper->SelectColorArray(field->c_str());
             if (array->GetNumberOfComponents() > 1) colours->SetVectorModeToMagnitude();
             mapper->SetScalarRange(range);
+            picture.field = *field;
+            picture.cell_field = cellArray != nullptr;
+            picture.vector_field = array->GetNumberOfComponents() > 1;
+            picture.range[0] = range[0];
+            picture.range[1] = range[1];
             vtkNew<vtkScalarBarActor> bar;
             bar->SetLookupTable(colours);
             bar->SetTitle(field->c_str());
@@ -142,6 +246,7 @@ int main(int argc, char** argv)
         actor->GetProperty()->SetColor(0.8, 0.8, 0.8);
         renderer->AddActor(actor);
         if (const auto title = app.optionIf("-title")) {
+            picture.title = *title;
             vtkNew<vtkTextActor> text;
             text->SetInput(title->c_str());
             text->GetTextProperty()->SetColor(0, 0, 0);
@@ -171,6 +276,8 @@ int main(int argc, char** argv)
 
         int width = 900, height = 700;
         if (const auto size = app.optionIf("-size")) std::sscanf(size->c_str(), "%d %d", &width, &height);
+        picture.width = width;
+        picture.height = height;
         vtkNew<vtkRenderWindow> window;
         window->SetOffScreenRendering(1);
         window->AddRenderer(renderer);
@@ -187,6 +294,16 @@ int main(int argc, char** argv)
             return fs::exists(tmp) && fs::file_size(tmp) > 0;
         });
         std::printf("renderVtk: %s\n", out.string().c_str());
+        if (!app.has("-noState")) {
+            const fs::path state = out.parent_path() / (out.stem().string() + "-paraview.py");
+            const std::string text = paraviewState(picture, camera);
+            writeViaTemporary(state, [&](const fs::path& tmp) {
+                std::ofstream file(tmp);
+                file << text;
+                return static_cast<bool>(file);
+            });
+            std::printf("renderVtk: %s (ParaView state: File > Load State)\n", state.string().c_str());
+        }
         return 0;
     });
 }
