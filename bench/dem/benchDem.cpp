@@ -5,6 +5,8 @@
 //   benchDem -block <cells> [N] -cuda   the same block on the CUDA backend (needs a GPU)
 //   benchDem -block <cells> [N] -dt <s> with the given step instead of 0.5 x the critical step
 //                                   (whose serial power iteration takes many minutes at 1e6 cells)
+//   benchDem -block <cells> [N] -order seeding   cells in the random order of the seeds instead
+//                                   of along a Morton curve (the default, cellOrder morton)
 //   benchDem -case <dir> [N]        a bondedDemFoam case from its latest time directory (e.g. an
 //                                   SPB rock after fracture), N steps
 //
@@ -65,14 +67,16 @@ void header()
                 "wall [s]", "cell-steps/s", "B/cell", "dt [s]");
 }
 
-void intactBlock(int nCells, int steps, bool cuda, double given_dt)
+void intactBlock(int nCells, int steps, bool cuda, double given_dt, CellOrder order)
 {
     // A block with the BDT's cell size (meso constant 7.25e-8 m^3), pd 0.6 of the spacing.
     const double volume = nCells * 7.25e-8;
     const double side = std::cbrt(volume / 2.0);
     const Domain domain = Domain::box({0, 0, 0}, {2 * side, side, side});
     const double spacing = std::cbrt(7.25e-8);
-    const VoronoiMesh mesh = generateVoronoiMesh(domain, nCells, 0.6 * spacing, 7);
+    // Cells numbered along a Morton curve (voronoiMeshDict cellOrder morton), as a large
+    // mesh should be; -order seeding keeps the random order of the seeds.
+    const VoronoiMesh mesh = generateVoronoiMesh(domain, nCells, 0.6 * spacing, 7, 0.1, order);
     DemParameters p;
     p.bond_tensile_strength = 1e12;  // intact: no bond ever breaks
     p.bond_cohesion = 1.5e12;
@@ -161,24 +165,27 @@ int main(int argc, char** argv)
     if (argc >= 3 && std::strcmp(argv[1], "-block") == 0) {
         bool cuda = false;
         int steps = 10;
+        CellOrder order = CellOrder::morton;
         double dt = 0.0;
         for (int a = 3; a < argc; ++a) {
             if (std::strcmp(argv[a], "-cuda") == 0)
                 cuda = true;
             else if (std::strcmp(argv[a], "-dt") == 0 && a + 1 < argc)
                 dt = std::atof(argv[++a]);
+            else if (std::strcmp(argv[a], "-order") == 0 && a + 1 < argc)
+                order = std::strcmp(argv[++a], "seeding") == 0 ? CellOrder::seeding : CellOrder::morton;
             else
                 steps = std::atoi(argv[a]);
         }
         try {
-            intactBlock(std::atoi(argv[2]), steps, cuda, dt);
+            intactBlock(std::atoi(argv[2]), steps, cuda, dt, order);
         } catch (const std::exception& error) {
             std::fprintf(stderr, "benchDem: %s\n", error.what());
             return 1;
         }
         return 0;
     }
-    intactBlock(10000, 100, false, 0.0);
-    intactBlock(100000, 10, false, 0.0);
+    intactBlock(10000, 100, false, 0.0, CellOrder::morton);
+    intactBlock(100000, 10, false, 0.0, CellOrder::morton);
     return 0;
 }

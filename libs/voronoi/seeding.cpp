@@ -117,6 +117,45 @@ void checkArguments(int nCells, double pruningDistance)
 
 }  // namespace
 
+namespace {
+
+// The 21 low bits of v spread to every third bit.
+std::uint64_t spreadBits(std::uint64_t v)
+{
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+}  // namespace
+
+void orderAlongMortonCurve(std::vector<Vec3>& points)
+{
+    if (points.size() < 2) return;
+    Vec3 low = points[0], high = points[0];
+    for (const Vec3& p : points) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    const double extent = std::max({high.x - low.x, high.y - low.y, high.z - low.z, 1e-300});
+    const double scale = double((1 << 21) - 1) / extent;
+    std::vector<std::pair<std::uint64_t, std::size_t>> keys(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3 q = (points[i] - low) * scale;
+        keys[i] = {spreadBits(std::uint64_t(q.x)) | spreadBits(std::uint64_t(q.y)) << 1 |
+                       spreadBits(std::uint64_t(q.z)) << 2,
+                   i};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<Vec3> ordered(points.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) ordered[i] = points[keys[i].second];
+    points = std::move(ordered);
+}
+
 std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed)
 {
     checkArguments(nCells, pruningDistance);

@@ -331,10 +331,11 @@ VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, dou
 }
 
 VoronoiMesh generateVoronoiMesh(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
-                                double dilationFraction)
+                                double dilationFraction, CellOrder order)
 {
-    VoronoiMesh mesh =
-        tessellate(domain, placeSeeds(domain, nCells, pruningDistance, seed), dilationFraction);
+    std::vector<Vec3> seeds = placeSeeds(domain, nCells, pruningDistance, seed);
+    if (order == CellOrder::morton) orderAlongMortonCurve(seeds);
+    VoronoiMesh mesh = tessellate(domain, seeds, dilationFraction);
     mesh.seed = seed;
     mesh.pruningDistance = pruningDistance;
     return mesh;

@@ -20,9 +20,14 @@ namespace rockfrac {
 // generateVoronoiMesh.
 VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, double dilationFraction = 0.1);
 
+// How the cells of a generated mesh are numbered: in the order the seeds were placed
+// (random in space), or along a Morton curve (neighbours close in memory: faster DEM
+// steps on large meshes, the same geometry).
+enum class CellOrder { seeding, morton };
+
 // placeSeeds then tessellate, recording the seed and pruning distance.
 VoronoiMesh generateVoronoiMesh(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
-                                double dilationFraction = 0.1);
+                                double dilationFraction = 0.1, CellOrder order = CellOrder::seeding);
 
 // Mean cell size: the mean over cells of the volume-equivalent diameter
 // (6 V / pi)^(1/3) [m]. For the paper's 300-cell BDT disc (D 44.8 mm,

@@ -3,8 +3,10 @@
 // the mesh depends on nothing but its inputs (seed, thread count).
 #include <omp.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "voronoi/polyhedron.hpp"
@@ -127,4 +129,31 @@ TEST_CASE("seeds outside the domain are refused", "[voronoi][tessellation]")
     const Domain box = Domain::box({0, 0, 0}, {1, 1, 1});
     CHECK_THROWS_AS(tessellate(box, {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}}), UserError);
     CHECK_THROWS_AS(tessellate(box, {}), UserError);
+}
+
+TEST_CASE("cellOrder morton: the same cells renumbered, neighbours close in index", "[voronoi][order]")
+{
+    const Domain box = Domain::box({0, 0, 0}, {0.04, 0.02, 0.02});
+    const VoronoiMesh seeding = generateVoronoiMesh(box, 2000, 5e-4, 11);
+    const VoronoiMesh morton = generateVoronoiMesh(box, 2000, 5e-4, 11, 0.1, CellOrder::morton);
+    REQUIRE(morton.nCells() == seeding.nCells());
+    REQUIRE(morton.nBonds() == seeding.nBonds());
+    checkInvariants(morton);
+    // A permutation of the same seeds (hence the same cells).
+    auto sorted = [](std::vector<Vec3> v) {
+        std::sort(v.begin(), v.end(), [](const Vec3& a, const Vec3& b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        });
+        return v;
+    };
+    const std::vector<Vec3> a = sorted(seeding.seeds), b = sorted(morton.seeds);
+    for (std::size_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == b[i]);
+    // What the ordering is for: bonded neighbours close in memory.
+    auto meanIndexGap = [](const VoronoiMesh& m) {
+        double sum = 0.0;
+        for (const VoronoiBond& bond : m.bonds) sum += std::abs(bond.cellJ - bond.cellI);
+        return sum / m.nBonds();
+    };
+    INFO("mean |i - j| over bonds: seeding " << meanIndexGap(seeding) << ", morton " << meanIndexGap(morton));
+    CHECK(meanIndexGap(morton) < 0.25 * meanIndexGap(seeding));
 }

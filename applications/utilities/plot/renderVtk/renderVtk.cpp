@@ -130,8 +130,8 @@ std::string paraviewState(const PictureSettings& p, vtkCamera* camera)
       << "import sys\n"
       << "from paraview.simple import *\n\n"
       << "source = " << (p.input.extension() == ".vtp" ? "XMLPolyDataReader" : "XMLUnstructuredGridReader")
-      << "(registrationName=" << pythonString(p.input.filename().string())
-      << ", FileName=[" << pythonString(input) << "])\n"
+      << "(registrationName=" << pythonString(p.input.filename().string()) << ", FileName=["
+      << pythonString(input) << "])\n"
       << "view = GetActiveViewOrCreate('RenderView')\n"
       << "view.ViewSize = [" << p.width << ", " << p.height << "]\n"
       << "view.OrientationAxesVisibility = 0\n"
