@@ -90,6 +90,9 @@ badCase pruningTooLarge meshed "voronoiMeshDict" "pruning distance" voronoiMesh 
 caseDict -case . system/voronoiMeshDict -entry nCells -set 5000
 caseDict -case . system/voronoiMeshDict -entry pruningDistance -set 3.5e-3
 SETUP
+badCase unknownCellOrder meshed "voronoiMeshDict" "cellOrder" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry cellOrder -add hilbert
+SETUP
 badCase geometryPropertiesTruncated meshed "geometryProperties" "" voronoiMesh -case . <<'SETUP'
 head -c 300 constant/geometryProperties > g && mv g constant/geometryProperties
 SETUP
