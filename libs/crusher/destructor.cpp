@@ -60,7 +60,7 @@ DestructorResult destroyBelow(DemModel& model, double below)
     for (int k = 0; k < faces.size(); ++k)
         for (int b = faces.bond_offset[k]; b < faces.bond_offset[k + 1]; ++b)
             bond_cells[b] = {faces.cell_i[k], faces.cell_j[k]};
-    const std::vector<std::uint8_t> stage(model.bondStages().begin(), model.bondStages().end());
+    const std::vector<std::uint8_t> stage(model.bondStorage().stage.begin(), model.bondStorage().stage.end());
     const FragmentLabels labels = labelFragments(n, bond_cells, stage);
     std::vector<char> leaving(labels.n_fragments, 0);
     for (int c = 0; c < n; ++c)

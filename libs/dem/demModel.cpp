@@ -1492,14 +1492,12 @@ void DemModel::setSofteningPerBond(const std::vector<BondSoftening>& per_bond)
     }
 }
 
-int DemModel::claimSofteningSlot(int k)
+void DemModel::claimSofteningSlot(int k)
 {
-    if (interfaces_.softening_slot[k] < 0) {
-        interfaces_.softening_slot[k] = static_cast<int>(bonds_.softening.size());
-        bonds_.softening.resize(bonds_.softening.size() +
-                                (interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k]));
-    }
-    return interfaces_.softening_slot[k];
+    if (interfaces_.softening_slot[k] >= 0) return;
+    interfaces_.softening_slot[k] = static_cast<int>(bonds_.softening.size());
+    bonds_.softening.resize(bonds_.softening.size() +
+                            (interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k]));
 }
 
 void DemModel::setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items)

@@ -161,7 +161,6 @@ public:
     // (O(bonds): for output, restart and tests, not for a loop).
     BondArrays bonds() const;
     int nBonds() const { return bonds_.size(); }
-    const std::vector<unsigned char>& bondStages() const { return bonds_.stage; }  // BondStage per bond
     const BondStorage& bondStorage() const { return bonds_; }  // the compact form bonds() expands
     const InterfaceArrays& interfaces() const { return interfaces_; }
     const ContactPairArrays& contactPairs() const { return pairs_; }
@@ -235,7 +234,7 @@ private:
     // slots are claimed for every interface with a bond past its onset.
     std::vector<BondSoftening> softeningPerBond() const;
     void setSofteningPerBond(const std::vector<BondSoftening>& per_bond);
-    int claimSofteningSlot(int interface);
+    void claimSofteningSlot(int interface);
     GatherArgs gatherArgs();
     IntegrationArgs integrationArgs();
     CellContactView cellView() const;
