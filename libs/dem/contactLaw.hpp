@@ -47,6 +47,10 @@ struct PatchPoint {
     Vec3 normal;             // unit, from the wall into the cell
     Vec3 relative_velocity;  // cell minus wall at the point [m/s]
     double overlap = 0.0;    // > 0 [m]
+    // Torque on the cell per newton of the point's normal force besides that of the force
+    // at the point: from an overlap that depends on the cell's orientation itself (the
+    // angle weight of a ridge–edge pair, see wallPatch) [m].
+    Vec3 torque_per_force;
 };
 
 // Most points of one patch; the kernel keeps the deepest ones beyond that.
@@ -83,7 +87,9 @@ struct CellContactView {
     const double* dilation_radius = nullptr;
     const double* bounding_radius = nullptr;  // of the dilated core about the centroid
     const int* core_vertex_offset = nullptr;
-    const Vec3* core_vertices = nullptr;  // body frame
+    const Vec3* core_vertices = nullptr;        // body frame
+    const int* core_edge_offset = nullptr;      // entries of core_edges, two per edge
+    const unsigned char* core_edges = nullptr;  // vertex index pairs of the core's edges
 };
 
 RF_HD inline ConvexVertexSet cellCore(const CellContactView& cells, int c)
@@ -273,6 +279,9 @@ struct WallKernelArgs {
     CellContactView cells;
     const WallPose* walls = nullptr;
     const Vec3* triangle_vertices = nullptr;  // 3 per triangle, wall frame
+    // Per triangle: which of its edges and corners are convex features of the surface
+    // (ridges and convex vertices, see ridgeBit), each flagged on one owning triangle only.
+    const unsigned short* triangle_features = nullptr;
     const int* item_cell = nullptr;
     const int* item_wall = nullptr;
     const int* item_triangle_offset = nullptr;  // candidate triangles of item i
@@ -354,6 +363,61 @@ RF_HD inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec
     return closestPointOnTriangle(p, a, b, c, feature, vertex);
 }
 
+// Closest points of segments [p1, q1] and [p2, q2] (Ericson, Real-Time Collision
+// Detection 5.1.9): c1 on the first, c2 on the second. Parallel segments take s = 0 (any
+// pair of the overlap is closest; a configuration of measure zero).
+RF_HD inline void closestPointsOfSegments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2,
+                                          Vec3& c1, Vec3& c2)
+{
+    const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+    const double a = norm2(d1), e = norm2(d2), f = dot(d2, r);
+    double s = 0.0, t = 0.0;
+    if (!(a > 0.0) && !(e > 0.0)) {
+        c1 = p1, c2 = p2;
+        return;
+    }
+    auto clamp01 = [](double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); };
+    if (!(a > 0.0)) {
+        t = clamp01(f / e);
+    } else {
+        const double c = dot(d1, r);
+        if (!(e > 0.0)) {
+            s = clamp01(-c / a);
+        } else {
+            const double b = dot(d1, d2), denominator = a * e - b * b;
+            s = denominator > 1e-14 * a * e ? clamp01((b * f - c * e) / denominator) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0.0) {
+                t = 0.0;
+                s = clamp01(-c / a);
+            } else if (t > 1.0) {
+                t = 1.0;
+                s = clamp01((b - c) / a);
+            }
+        }
+    }
+    c1 = p1 + s * d1;
+    c2 = p2 + t * d2;
+}
+
+// Ridge–edge pairs within 10 degrees of parallel are left to the vertex pairs at their
+// ends (a line contact); the pair's reach grows smoothly to r_d at 20 degrees.
+constexpr double ridge_parallel_begin = 10.0 * 3.14159265358979323846 / 180.0;
+constexpr double ridge_parallel_full = 20.0 * 3.14159265358979323846 / 180.0;
+
+// Bits of triangle_features: edge k (from corner k to corner k+1) is a ridge seen from
+// the winding side (+1) or the other side (-1); corner k is a convex vertex seen from
+// either side. A triangle carries the bits of the features it owns (the lowest-numbered
+// triangle of an edge or vertex), so that each feature is visited once.
+RF_HD inline unsigned short ridgeBit(int k, double side)
+{
+    return (unsigned short)(1u << (k + (side > 0.0 ? 0 : 3)));
+}
+RF_HD inline unsigned short convexCornerBit(int k, double side)
+{
+    return (unsigned short)(1u << (k + (side > 0.0 ? 6 : 9)));
+}
+
 // The nearest point of a triangulated surface (the candidate triangles of an item) to x,
 // with the pseudo-normal of the feature it lies on (Baerentzen & Aanaes 2005): the face
 // normal for a face point, the sum of the two face normals for an edge, the angle-weighted
@@ -421,58 +485,34 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
     return s;
 }
 
-// Triangulated surface, when no core vertex is near it: GJK between the core and each
-// candidate triangle; the nearest triangle makes the contact (one contact per cell and
-// surface). `side` (+1 or -1) turns the triangles' winding normals to the cell's side
-// (from the nearest point to the cell's centre, see wallKernel). A triangle reported as
-// cutting the core must come within the core's reach of its centre (a necessary
-// condition that rejects a false intersection of GJK on a degenerate simplex, which
-// would otherwise give the whole depth of the core below the triangle's infinite plane).
-RF_HD inline ContactGeometry triSurfaceGeometry(const WallKernelArgs& a, const ConvexVertexSet& core,
-                                                double radius, double core_reach, double side,
-                                                const WallPose& wall, int item)
-{
-    ContactGeometry best;
-    best.overlap = -1e300;
-    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
-        ConvexVertexSet triangle;
-        triangle.vertices = a.triangle_vertices + 3 * a.item_triangles[e];
-        triangle.n_vertices = 3;
-        triangle.position = wall.origin;
-        triangle.rotation = wall.rotation;
-        const Vec3 v0 = worldVertex(triangle, 0), v1 = worldVertex(triangle, 1),
-                   v2 = worldVertex(triangle, 2);
-        const Vec3 area_normal = cross(v1 - v0, v2 - v0);
-        if (!(norm2(area_normal) > 0.0)) continue;  // zero area: its edges belong to neighbours
-        const Vec3 face_normal = side * normalised(area_normal);
-        const GjkResult gjk = gjkDistance(triangle, core, v0 - core.position);
-        ContactGeometry g;
-        if (gjk.intersecting || gjk.distance <= 1e-9 * radius) {
-            if (norm(closestPointOnTriangle(core.position, v0, v1, v2) - core.position) > core_reach)
-                continue;
-            g = supportGeometry(triangle, core, face_normal, 0.0, radius);
-        } else {
-            g.normal = (gjk.point_b - gjk.point_a) / gjk.distance;
-            g.overlap = radius - gjk.distance;
-            g.point = 0.5 * (gjk.point_a + gjk.point_b - radius * g.normal);
-        }
-        if (g.overlap > best.overlap) best = g;
-    }
-    return best;
-}
-
-// The patch of a cell against a wall: every core vertex whose sphere (radius r_d)
-// overlaps the wall is a point. Plate: overlap r_d - signed distance of the vertex.
-// Triangulated surface: the signed distance of the vertex to the surface, from its
-// nearest point over all candidate triangles and the pseudo-normal there (so a vertex
-// over a shared edge counts once, and a vertex beside a triangle is never judged by
-// that triangle's infinite plane). side (+1/-1, see wallKernel) tells which side of the
-// winding the cell is on. A vertex behind the surface (its nearest point on a face or
-// an inner edge or vertex) overlaps by r_d + distance, pushed back towards that point;
-// at an open rim the surface has no inside and the rim is an edge seen from both sides.
-// Returns the number of points; sets cores_intersect when a vertex is behind the surface.
-RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, double radius, double side,
-                           const WallPose& wall, int item, PatchPoint* points, bool& cores_intersect)
+// The patch of a cell against a wall: one point per pair of features of the core and
+// the wall that come within r_d of each other (docs/theory-dem.md §7).
+// Plate: every core vertex, overlap r_d - signed distance of the vertex.
+// Triangulated surface, three kinds of pairs, each a Hertz point of its own:
+//  - a core vertex and the surface: the signed distance of the vertex to the surface, from
+//    its nearest point over all candidate triangles and the pseudo-normal there (so a
+//    vertex over a shared edge counts once, and a vertex beside a triangle is never judged
+//    by that triangle's infinite plane). side (+1/-1, see wallKernel) tells which side of
+//    the winding the cell is on. A vertex behind the surface (its nearest point on a face
+//    or an inner edge or vertex) overlaps by r_d + distance, pushed back towards that
+//    point; at an open rim the surface has no inside and the rim is an edge seen from both
+//    sides;
+//  - a ridge of the surface (a convex edge seen from the cell's side, or a rim) and a core
+//    edge: their closest points. A ridge lying across a core face is held at the two points
+//    where it passes under the face's edges, each moving smoothly with the cell;
+//  - a convex vertex of the surface and the core: the vertex's closest point on the core.
+//    These two kinds use the unsigned distance: a ridge or corner that has gone deeper
+//    than r_d into the core (the core cut; a broken run) is flagged, not pushed back.
+// Every pair's overlap is a continuous function of the cell's pose that is zero when the
+// pair comes into reach, so the elastic force derives from one potential and a cell rocking
+// over ridges keeps its energy (the former single GJK contact, used only while no core
+// vertex was in reach, jumped whenever a corner arrived). Concave and flat surface edges
+// never hold the nearest point of a convex core, so they need no pairs of their own; a core
+// face on a flat region is held by its corners alone, as on a plate.
+// Returns the number of points; sets cores_intersect when a feature is behind the surface.
+RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, int c, double radius,
+                           double side, const WallPose& wall, int item, PatchPoint* points,
+                           bool& cores_intersect)
 {
     int n = 0;
     cores_intersect = false;
@@ -499,6 +539,90 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
         p.point = x - (radius - 0.5 * p.overlap) * p.normal;
         addPatchPoint(points, n, p);
     }
+    if (wall.kind != wallTriSurface || a.triangle_features == nullptr) return n;
+
+    const double reach = a.cells.bounding_radius[c];  // of the dilated core about its centre
+    const unsigned char* edges = a.cells.core_edges + a.cells.core_edge_offset[c];
+    const int n_edge_entries = a.cells.core_edge_offset[c + 1] - a.cells.core_edge_offset[c];
+    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
+        const int t = a.item_triangles[e];
+        const unsigned short flags = a.triangle_features[t];
+        if (flags == 0) continue;
+        const Vec3* local = a.triangle_vertices + 3 * t;
+        const Vec3 p[3] = {wall.origin + wall.rotation * local[0], wall.origin + wall.rotation * local[1],
+                           wall.origin + wall.rotation * local[2]};
+        for (int k = 0; k < 3; ++k) {
+            if (flags & ridgeBit(k, side)) {
+                const Vec3 r0 = p[k], r1 = p[(k + 1) % 3];
+                Vec3 on_ridge, unused;
+                closestPointsOfSegments(r0, r1, core.position, core.position, on_ridge, unused);
+                const int n_entries = norm(on_ridge - core.position) < reach ? n_edge_entries : 0;
+                const Vec3 ridge = normalised(r1 - r0);
+                for (int j = 0; j + 1 < n_entries; j += 2) {
+                    const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
+                    // The angle weight w(theta) of the pair: 0 while the edges are within
+                    // ridge_parallel_begin of parallel, 1 beyond ridge_parallel_full.
+                    const Vec3 along = normalised(x1 - x0);
+                    const double cosine = dot(along, ridge);
+                    const Vec3 binormal = cross(along, ridge);
+                    const double angle = std::atan2(norm(binormal), cosine < 0.0 ? -cosine : cosine);
+                    if (!(angle > ridge_parallel_begin)) continue;
+                    double weight = 1.0, weight_slope = 0.0;
+                    if (angle < ridge_parallel_full) {
+                        const double width = ridge_parallel_full - ridge_parallel_begin;
+                        const double u = (angle - ridge_parallel_begin) / width;
+                        weight = u * u * (3.0 - 2.0 * u);
+                        weight_slope = 6.0 * u * (1.0 - u) / width;
+                    }
+                    Vec3 on_surface, on_core;
+                    closestPointsOfSegments(r0, r1, x0, x1, on_surface, on_core);
+                    const Vec3 gap = on_core - on_surface;
+                    const double distance = norm(gap);
+                    PatchPoint pt;
+                    pt.overlap = weight * radius - distance;
+                    if (!(pt.overlap > 0.0)) continue;
+                    if (distance > 1e-9 * radius) {
+                        pt.normal = gap / distance;
+                    } else {  // the ridge cuts the core edge: the core is r_d deep
+                        pt.normal = normalised(core.position - on_surface);
+                        cores_intersect = true;
+                    }
+                    // d(overlap)/d(rotation of the cell) = r_d w'(theta) dtheta/dphi
+                    // - d(distance)/dphi; the second term is the torque of the force at the
+                    // point, the first one acts as a torque of its own: with cos theta =
+                    // sigma a.b, dtheta/dphi = -sigma (a x b) / sin theta, and the torque on
+                    // the cell is F r_d w' sigma (a x b) / |a x b|.
+                    if (weight_slope > 0.0)
+                        pt.torque_per_force =
+                            (radius * weight_slope * (cosine < 0.0 ? -1.0 : 1.0) / norm(binormal)) * binormal;
+                    pt.point = on_core - (radius - 0.5 * pt.overlap) * pt.normal;
+                    addPatchPoint(points, n, pt);
+                }
+            }
+            if ((flags & convexCornerBit(k, side)) && norm(p[k] - core.position) < reach) {
+                const Vec3 origin{};
+                ConvexVertexSet vertex;
+                vertex.vertices = &origin;
+                vertex.n_vertices = 1;
+                vertex.position = p[k];
+                const GjkResult gjk = gjkDistance(vertex, core, core.position - p[k]);
+                PatchPoint pt;
+                if (gjk.intersecting || !(gjk.distance > 1e-9 * radius)) {
+                    // The surface's corner is inside the core: the depth is not resolved.
+                    pt.overlap = radius;
+                    pt.normal = normalised(core.position - p[k]);
+                    cores_intersect = true;
+                    pt.point = p[k];
+                } else {
+                    pt.overlap = radius - gjk.distance;
+                    if (!(pt.overlap > 0.0)) continue;
+                    pt.normal = (gjk.point_b - gjk.point_a) / gjk.distance;
+                    pt.point = gjk.point_b - (radius - 0.5 * pt.overlap) * pt.normal;
+                }
+                addPatchPoint(points, n, pt);
+            }
+        }
+    }
     return n;
 }
 
@@ -521,20 +645,7 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
         if (s.distance > a.cells.bounding_radius[c]) return clearItem(a.items, item);
         side = dot(core.position - s.point, s.pseudo_normal) < 0.0 ? -1.0 : 1.0;
     }
-    int n = wallPatch(a, core, radius, side, wall, item, points, cores_intersect);
-    if (n == 0 && wall.kind == wallTriSurface) {
-        // No core vertex near the surface, but a triangle edge or corner may reach into
-        // a face or edge of the core: the single contact from GJK.
-        const ContactGeometry g =
-            triSurfaceGeometry(a, core, radius, a.cells.bounding_radius[c], side, wall, item);
-        if (g.overlap > 0.0) {
-            points[0].point = g.point;
-            points[0].normal = g.normal;
-            points[0].overlap = g.overlap;
-            cores_intersect = g.cores_intersect;
-            n = 1;
-        }
-    }
+    const int n = wallPatch(a, core, c, radius, side, wall, item, points, cores_intersect);
     if (n == 0) return clearItem(a.items, item);
     for (int i = 0; i < n; ++i)
         points[i].relative_velocity =

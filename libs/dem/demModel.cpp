@@ -13,6 +13,7 @@
 #include "core/parallel.hpp"
 #include "dem/cellCore.hpp"
 #include "dem/cellKernels.hpp"
+#include "dem/surfaceFeatures.hpp"
 
 namespace rockfrac {
 
@@ -133,6 +134,7 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
     skin_ = parameters_.skin_distance;
     interfaces_.bond_offset.assign(1, 0);
     cells_.core_vertex_offset.assign(1, 0);
+    cells_.core_edge_offset.assign(1, 0);
     cells_.anchor_node_offset.assign(1, 0);
     buildIncidence();
     refreshKinematicCaches();
@@ -187,6 +189,7 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
     c.bounding_radius.resize(first + n);
     c.initial_bond_count.resize(first + n, 0);
     if (c.core_vertex_offset.empty()) c.core_vertex_offset.assign(1, 0);
+    if (c.core_edge_offset.empty()) c.core_edge_offset.assign(1, 0);
     for (int local = 0; local < n; ++local) {
         const int cell = first + local;
         const double density = parameters_.rock_density;
@@ -223,18 +226,35 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
         for (int v = mesh.cellVertexOffset[local]; v < mesh.cellVertexOffset[local + 1]; ++v)
             vertices.push_back(mesh.vertices[v] - centroid);
         std::vector<CellPlane> planes;
+        std::vector<std::array<int, 2>> cell_edges;  // for a core shrunk instead of eroded
         for (int f = mesh.cellFaceOffset[local]; f < mesh.cellFaceOffset[local + 1]; ++f) {
-            const Vec3 on_face = vertices[mesh.faceVertices[mesh.faceVertexOffset[f]]];
+            const int first_node = mesh.faceVertexOffset[f], end_node = mesh.faceVertexOffset[f + 1];
+            const Vec3 on_face = vertices[mesh.faceVertices[first_node]];
             planes.push_back({mesh.faceNormal[f], dot(mesh.faceNormal[f], on_face)});
+            for (int k = first_node; k < end_node; ++k) {
+                const int a = mesh.faceVertices[k],
+                          b = mesh.faceVertices[k + 1 < end_node ? k + 1 : first_node];
+                const std::array<int, 2> edge{std::min(a, b), std::max(a, b)};
+                if (std::find(cell_edges.begin(), cell_edges.end(), edge) == cell_edges.end())
+                    cell_edges.push_back(edge);
+            }
         }
-        const ErodedCore core = erodeConvexCell(vertices, planes, dilation);
+        const ErodedCore core = erodeConvexCell(vertices, planes, cell_edges, dilation);
         if (core.shrunk) ++counters_.shrunk_cores;
+        if (core.vertices.size() > 255)
+            throw std::runtime_error(
+                "a cell core with more than 255 vertices (the edge table holds 1-byte indices)");
         double reach = 0.0;
         for (const Vec3& v : core.vertices) {
             c.core_vertices.push_back(transposeTimes(R, v));
             reach = std::max(reach, norm(v));
         }
         c.core_vertex_offset.push_back(static_cast<int>(c.core_vertices.size()));
+        for (const auto& edge : core.edges) {
+            c.core_edges.push_back(static_cast<std::uint8_t>(edge[0]));
+            c.core_edges.push_back(static_cast<std::uint8_t>(edge[1]));
+        }
+        c.core_edge_offset.push_back(static_cast<int>(c.core_edges.size()));
         c.bounding_radius[cell] = reach + dilation;
     }
     const double G = parameters_.rock_youngs_modulus / (2.0 * (1.0 + parameters_.rock_poisson_ratio));
@@ -427,6 +447,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     // Cells, with their core vertex and anchor node ranges.
     CellArrays& c = cells_;
     keepFlaggedRanges(c.core_vertex_offset, c.core_vertices, keep_cell);
+    keepFlaggedRanges(c.core_edge_offset, c.core_edges, keep_cell);
     keepFlaggedRanges(c.anchor_node_offset, c.anchor_nodes, keep_cell);
     keepFlagged(c.position, keep_cell);
     keepFlagged(c.velocity, keep_cell);
@@ -574,6 +595,8 @@ void DemModel::shrinkToFit()
     CellArrays& c = cells_;
     c.core_vertices.shrink_to_fit();
     c.core_vertex_offset.shrink_to_fit();
+    c.core_edges.shrink_to_fit();
+    c.core_edge_offset.shrink_to_fit();
     InterfaceArrays& f = interfaces_;
     for (auto* v : {&f.cell_i, &f.cell_j, &f.bond_offset, &f.intact_bonds}) v->shrink_to_fit();
     for (auto* v : {&f.normal_i, &f.normal_j}) v->shrink_to_fit();
@@ -628,6 +651,8 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
             local.push_back(vertices[t[k]]);
         }
     triangle_vertices_.insert(triangle_vertices_.end(), local.begin(), local.end());
+    const std::vector<std::uint16_t> features = surfaceFeatureFlags(vertices, triangles);
+    triangle_features_.insert(triangle_features_.end(), features.begin(), features.end());
     triangle_grids_.emplace_back(local);
     walls_.push_back(w);
     setWallMotion(nWalls() - 1, motion);
@@ -1048,6 +1073,8 @@ CellContactView DemModel::cellView() const
     v.bounding_radius = cells_.bounding_radius.data();
     v.core_vertex_offset = cells_.core_vertex_offset.data();
     v.core_vertices = cells_.core_vertices.data();
+    v.core_edge_offset = cells_.core_edge_offset.data();
+    v.core_edges = cells_.core_edges.data();
     return v;
 }
 
@@ -1147,6 +1174,7 @@ void DemModel::runContactKernels(double dt)
     wa.cells = pa.cells;
     wa.walls = wall_poses_.data();
     wa.triangle_vertices = triangle_vertices_.data();
+    wa.triangle_features = triangle_features_.data();
     wa.item_cell = wall_items_.cell.data();
     wa.item_wall = wall_items_.wall.data();
     wa.item_triangle_offset = wall_items_.triangle_offset.data();
@@ -1562,7 +1590,8 @@ DemMemoryBytes DemModel::memoryUse() const
               bytes(c.force) + bytes(c.torque) + bytes(c.mass) + bytes(c.principal_inertia) +
               bytes(c.dilation_radius) + bytes(c.bounding_radius) + bytes(c.initial_bond_count) +
               bytes(rotation_) + bytes(angular_velocity_world_) + bytes(position_at_build_);
-    m.cores = bytes(c.core_vertex_offset) + bytes(c.core_vertices);
+    m.cores = bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.core_edge_offset) +
+              bytes(c.core_edges);
     m.anchor_nodes = bytes(c.anchor_node_offset) + bytes(c.anchor_nodes);
     const InterfaceArrays& f = interfaces_;
     m.interfaces = bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
@@ -1582,7 +1611,7 @@ DemMemoryBytes DemModel::memoryUse() const
                    bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +
                    bytes(w.torque_on_cell) + bytes(w.elastic_energy) + bytes(w.damping_power) +
                    bytes(w.friction_dissipation) + bytes(w.wall_power) + bytes(w.status) +
-                   bytes(triangle_vertices_);
+                   bytes(triangle_vertices_) + bytes(triangle_features_);
     m.lists = bytes(cell_interface_offset_) + bytes(cell_interfaces_) + bytes(cell_pair_offset_) +
               bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) +
               bytes(neighbour_cell_) + bytes(neighbour_interface_);

@@ -15,6 +15,7 @@
 // functions over raw arrays; per-item forces are summed per cell in a fixed order,
 // so results are bitwise independent of the OpenMP thread count.
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -59,13 +60,13 @@ struct DemCounters {
 // What the model's arrays hold, by part [bytes] (bench/, docs/benchmarks.md).
 struct DemMemoryBytes {
     std::size_t cells = 0;         // state, constants and per-step caches per cell
-    std::size_t cores = 0;         // eroded core vertices (contact geometry)
+    std::size_t cores = 0;         // eroded core vertices and edges (contact geometry)
     std::size_t anchor_nodes = 0;  // bond anchor nodes per cell
     std::size_t interfaces = 0;    // per bonded cell pair, incl. its force/torque sums
     std::size_t bonds = 0;         // per bond: two node indices and the stage
     std::size_t softening = 0;     // the softening pool (bonds past their onset)
     std::size_t pairs = 0;         // contact candidates with their histories
-    std::size_t wall_items = 0;    // cell–wall candidates and the wall triangles
+    std::size_t wall_items = 0;    // cell–wall candidates and the wall triangles with their features
     std::size_t lists = 0;         // per-cell gather and neighbour lists
 
     std::size_t total() const
@@ -169,6 +170,7 @@ public:
     const DemCounters& counters() const { return counters_; }
     const DemParameters& parameters() const { return parameters_; }
     const std::vector<Vec3>& triangleVertices() const { return triangle_vertices_; }
+    const std::vector<std::uint16_t>& triangleFeatures() const { return triangle_features_; }
 
     // Restart: the kinematic state, the bond histories, the contact histories (keys
     // and springs), the walls, time, step count and the energy accumulators. Sizes
@@ -256,8 +258,9 @@ private:
     ContactPairArrays pairs_;
     WallContactArrays wall_items_;
     std::vector<WallState> walls_;
-    std::vector<Vec3> triangle_vertices_;       // 3 per triangle, each wall's own frame
-    std::vector<TriangleGrid> triangle_grids_;  // per wall (empty for plates)
+    std::vector<Vec3> triangle_vertices_;           // 3 per triangle, each wall's own frame
+    std::vector<std::uint16_t> triangle_features_;  // ridges and convex corners (surfaceFeatures.hpp)
+    std::vector<TriangleGrid> triangle_grids_;      // per wall (empty for plates)
 
     // Per-step caches.
     std::vector<Mat3> rotation_;

@@ -30,6 +30,11 @@ struct CellArrays {
     std::vector<double> bounding_radius;  // of the dilated core about the centroid [m]
     std::vector<int> core_vertex_offset;  // core of cell c: [offset[c], offset[c+1])
     std::vector<Vec3> core_vertices;      // eroded cell, body frame [m]
+    // The core's edges as pairs of its vertex indices (2 bytes per edge: a core has
+    // fewer than 256 vertices): cell c's are the entries [core_edge_offset[c],
+    // core_edge_offset[c+1]) of core_edges, two per edge.
+    std::vector<int> core_edge_offset;
+    std::vector<std::uint8_t> core_edges;  // 2 per edge
     // The face nodes the cell's bonds are anchored at, each once (a node is shared by
     // the bonds of up to three faces of the cell), body frame [m]: cell c's are
     // [anchor_node_offset[c], anchor_node_offset[c+1]).

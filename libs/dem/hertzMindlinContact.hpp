@@ -98,7 +98,7 @@ struct HertzMindlinLaw {
             out.elastic_energy += 0.4 * elastic * p.overlap;
             normal_total += force;
             out.force += force * p.normal;
-            out.torque += cross(p.point - in.centre, force * p.normal);
+            out.torque += cross(p.point - in.centre, force * p.normal) + force * p.torque_per_force;
         }
         // One tangential spring at the stiffness centre.
         const double inverse = 1.0 / stiffness;

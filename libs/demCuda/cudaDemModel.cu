@@ -310,7 +310,8 @@ struct CudaDemModel::Buffers {
     DeviceArray<Vec3> position, velocity, angular_velocity, force, torque, principal_inertia, core_vertices;
     DeviceArray<Quat> orientation;
     DeviceArray<double> mass, dilation_radius, bounding_radius;
-    DeviceArray<int> core_vertex_offset;
+    DeviceArray<int> core_vertex_offset, core_edge_offset;
+    DeviceArray<unsigned char> core_edges;
     DeviceArray<Mat3> rotation;
     DeviceArray<Vec3> angular_velocity_world, position_at_build;
     // Interfaces and bonds.
@@ -338,6 +339,7 @@ struct CudaDemModel::Buffers {
     DeviceArray<unsigned char> item_status;
     DeviceArray<WallPose> walls;
     DeviceArray<Vec3> triangle_vertices;
+    DeviceArray<std::uint16_t> triangle_features;
     DeviceArray<WallReaction> reactions;
     // Block partials.
     DeviceArray<BondSums> bond_sums;
@@ -360,6 +362,8 @@ struct CudaDemModel::Buffers {
                               dilation_radius.bytes(),
                               bounding_radius.bytes(),
                               core_vertex_offset.bytes(),
+                              core_edge_offset.bytes(),
+                              core_edges.bytes(),
                               rotation.bytes(),
                               angular_velocity_world.bytes(),
                               position_at_build.bytes(),
@@ -413,6 +417,7 @@ struct CudaDemModel::Buffers {
                               item_status.bytes(),
                               walls.bytes(),
                               triangle_vertices.bytes(),
+                              triangle_features.bytes(),
                               reactions.bytes(),
                               bond_sums.bytes(),
                               pair_sums.bytes(),
@@ -499,7 +504,7 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
                         arrayBytes(c.angular_velocity) + arrayBytes(c.force) + arrayBytes(c.torque) +
                         arrayBytes(c.mass) + arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) +
                         arrayBytes(c.bounding_radius) + arrayBytes(c.core_vertex_offset) +
-                        arrayBytes(c.core_vertices);
+                        arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) + arrayBytes(c.core_edges);
     total += n * (sizeof(Mat3) + 2 * sizeof(Vec3));  // rotation, world angular velocity, position at build
     const InterfaceArrays& f = host.interfaces_;
     total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
@@ -523,7 +528,7 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
              arrayBytes(w.force_on_cell) + arrayBytes(w.torque_on_cell) + arrayBytes(w.elastic_energy) +
              arrayBytes(w.damping_power) + arrayBytes(w.friction_dissipation) + arrayBytes(w.wall_power) +
              arrayBytes(w.status) + arrayBytes(host.cell_wall_item_offset_) +
-             arrayBytes(host.triangle_vertices_);
+             arrayBytes(host.triangle_vertices_) + arrayBytes(host.triangle_features_);
     total +=
         (f.cell_i.size() / threads_per_block + 1) * sizeof(BondSums) +
         (p.cell_a.size() / threads_per_block + w.cell.size() / threads_per_block + 2) * sizeof(ContactSums) +
@@ -552,6 +557,8 @@ void CudaDemModel::upload()
     d.bounding_radius.upload(c.bounding_radius);
     d.core_vertex_offset.upload(c.core_vertex_offset);
     d.core_vertices.upload(c.core_vertices);
+    d.core_edge_offset.upload(c.core_edge_offset);
+    d.core_edges.upload(c.core_edges);
     d.rotation.upload(host_.rotation_);
     d.angular_velocity_world.upload(host_.angular_velocity_world_);
     const InterfaceArrays& f = host_.interfaces_;
@@ -580,6 +587,7 @@ void CudaDemModel::upload()
     d.cell_interface_offset.upload(host_.cell_interface_offset_);
     d.cell_interfaces.upload(host_.cell_interfaces_);
     d.triangle_vertices.upload(host_.triangle_vertices_);
+    d.triangle_features.upload(host_.triangle_features_);
     uploadLists();
     if (host_.lists_valid_) d.position_at_build.upload(host_.position_at_build_);
     d.bond_sums.resize(blocksFor(f.size()));
@@ -763,6 +771,8 @@ void CudaDemModel::computeForces(double dt)
     cells.bounding_radius = d.bounding_radius.data();
     cells.core_vertex_offset = d.core_vertex_offset.data();
     cells.core_vertices = d.core_vertices.data();
+    cells.core_edge_offset = d.core_edge_offset.data();
+    cells.core_edges = d.core_edges.data();
 
     PairKernelArgs pa;
     pa.constants = h.rock_rock_;
@@ -790,6 +800,7 @@ void CudaDemModel::computeForces(double dt)
     wa.cells = cells;
     wa.walls = d.walls.data();
     wa.triangle_vertices = d.triangle_vertices.data();
+    wa.triangle_features = d.triangle_features.data();
     wa.item_cell = d.item_cell.data();
     wa.item_wall = d.item_wall.data();
     wa.item_triangle_offset = d.item_triangle_offset.data();
