@@ -27,10 +27,12 @@ struct HertzMindlinLaw {
         const Vec3 tangential_velocity = in.relative_velocity - normal_velocity * n;
         const double elastic_normal_force = (4.0 / 3.0) * k.effective_modulus * contact_radius * in.overlap;
         double normal_force = elastic_normal_force - normal_damping * normal_velocity;
-        if (normal_force < 0.0)
-            normal_force = 0.0;  // a contact pushes, never pulls
-        else
-            out.damping_power = normal_damping * normal_velocity * normal_velocity;
+        if (normal_force < 0.0) normal_force = 0.0;  // a contact pushes, never pulls
+        // The dashpot's share of the force is what it adds to the spring's; its power is
+        // that share times the separation rate: c v_n^2, or, when the contact would pull and
+        // the force is cut to zero, the whole spring force F_el v_n (the spring's energy
+        // released while separating is lost, not given back to the cells).
+        out.damping_power = (elastic_normal_force - normal_force) * normal_velocity;
 
         // The stored spring is turned into the current tangent plane (magnitude kept),
         // then incremented by -S_t times the tangential slip of this step.
@@ -91,10 +93,8 @@ struct HertzMindlinLaw {
             const double elastic = (4.0 / 3.0) * k.effective_modulus * contact_radius * p.overlap;
             const double normal_velocity = dot(p.relative_velocity, p.normal);
             double force = elastic - share * normal_damping * normal_velocity;
-            if (force < 0.0)
-                force = 0.0;
-            else
-                out.damping_power += share * normal_damping * normal_velocity * normal_velocity;
+            if (force < 0.0) force = 0.0;
+            out.damping_power += (elastic - force) * normal_velocity;  // as in evaluate()
             out.elastic_energy += 0.4 * elastic * p.overlap;
             normal_total += force;
             out.force += force * p.normal;
