@@ -382,3 +382,72 @@ TEST_CASE("GJK between a core and long thin triangles and slivers against brute 
     CHECK(separated > 100);
     CHECK(intersecting > 20);
 }
+
+TEST_CASE("experiment: a cell thrown at the CH660 liners with damping, energy balance", "[.linerbalance]")
+{
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    p.rock_steel_restitution = std::getenv("LB_E") ? std::atof(std::getenv("LB_E")) : 0.3;
+    p.rock_steel_friction = 0.0;
+    const bool concave = std::getenv("LB_CONCAVE") != nullptr;
+    const int n_segments = std::getenv("LB_SEG") ? std::atoi(std::getenv("LB_SEG")) : 90;
+    const TriSurface s = concave
+                             ? revolveProfileShaped(concave_profile, n_segments, SurfaceFacing::towardsAxis)
+                             : revolveProfileShaped(mantle_profile, n_segments, SurfaceFacing::awayFromAxis);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    double worst = 0.0;
+    const int trials = std::getenv("LB_TRIALS") ? std::atoi(std::getenv("LB_TRIALS")) : 20;
+    for (int trial = 0; trial < trials; ++trial) {
+        const int nb = std::getenv("LB_BLOCK") ? std::atoi(std::getenv("LB_BLOCK")) : 1;
+        if (nb > 1) p.bond_tensile_strength = p.bond_cohesion = 1e12;
+        DemModel model(test::boxBlockMesh(nb, nb, nb, {cell, cell, cell}, rd, nb > 1), p);
+        model.addTriSurface(s.points, s.triangles);
+        // A point on the surface at mid height, the cell 3 mm off it along the radial
+        // direction, thrown at it with a spin.
+        const double angle = 3.14159 * uniform(random), z = 0.3 + 0.05 * uniform(random);
+        double r = 0.0;  // profile radius at z (linear between the points)
+        const Profile& prof = concave ? concave_profile : mantle_profile;
+        for (std::size_t k = 0; k + 1 < prof.size(); ++k) {
+            const double z0 = prof[k].z, z1 = prof[k + 1].z;
+            if ((z - z0) * (z - z1) <= 0.0)
+                r = prof[k].r + (z - z0) / (z1 - z0) * (prof[k + 1].r - prof[k].r);
+        }
+        const Vec3 radial{std::cos(angle), std::sin(angle), 0.0};
+        const double off = (concave ? -1.0 : 1.0) * (0.5 * nb * cell * std::sqrt(3.0) + 0.5e-3);
+        const Vec3 x = Vec3{r * radial.x, r * radial.y, z} + off * radial;
+        const Quat q =
+            quatFromRotationVector({3 * uniform(random), 3 * uniform(random), 3 * uniform(random)});
+        const Mat3 R = rotationMatrix(q);
+        Vec3 mean{};
+        for (int c = 0; c < model.cells().size(); ++c)
+            mean += model.cells().position[c] / double(model.cells().size());
+        const Vec3 v =
+            (concave ? 2.0 : -2.0) * radial + Vec3{0.3 * uniform(random), 0.3 * uniform(random), 0.0};
+        const Vec3 w{100 * uniform(random), 100 * uniform(random), 100 * uniform(random)};
+        for (int c = 0; c < model.cells().size(); ++c) {
+            const Vec3 arm = R * (model.cells().position[c] - mean);
+            model.setCellPose(c, x + arm, q * model.cells().orientation[c]);
+            model.setCellVelocity(
+                c, v + cross(w / double(nb), arm),
+                transposeTimes(rotationMatrix(q * model.cells().orientation[c]), w / double(nb)));
+        }
+        model.evaluateForces(0.0);
+        const double frac = std::getenv("LB_FRAC") ? std::atof(std::getenv("LB_FRAC")) : 0.8;
+        const double dt = std::min(1e-7, frac * model.criticalTimeStep().value);
+        model.step(dt);
+        const double initial = model.energies().balance();
+        const double scale = model.energies().kinetic();
+        double largest = 0.0;
+        for (int i = 0; i < static_cast<int>(1.5e-3 / dt); ++i) {
+            model.step(dt);
+            largest = std::max(largest, std::fabs(model.energies().balance() - initial));
+        }
+        const DemEnergies& e = model.energies();
+        WARN("dt " << dt << " trial " << trial << " KE0 " << scale << " KE " << e.kinetic() << " damping "
+                   << e.contact_damping << " error " << (e.balance() - initial) / scale << " largest "
+                   << largest / scale);
+        worst = std::max(worst, largest / scale);
+    }
+    WARN("worst " << worst);
+}
