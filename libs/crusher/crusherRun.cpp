@@ -211,7 +211,9 @@ struct CrusherRun::Impl {
     void afterStep(TimeSeriesWriter& discharge)
     {
         const double power = model->wallPower(mantle);
-        mantleWork += power * time.deltaT();
+        // The model books the mantle's work half a step at a time with the forces of each
+        // half kick (the mantle moves every step, so the forces are re-evaluated before it).
+        mantleWork = model->wallWork(mantle);
         const Vec3 force = model->wallReaction(mantle);
         const Vec3 origin = model->wall(mantle).origin;
         sumForce += force;

@@ -1098,11 +1098,15 @@ void DemModel::runBondKernel(double dt)
         bond_runner_(again);
     }
     double strain = 0.0;
+    force_rates_.bond_damping = 0.0;
     for (const BondBlockSums& s : bond_block_sums_) {
         strain += s.strain_energy;
-        energies_.bond_damping += s.damping_power * dt;
+        force_rates_.bond_damping += s.damping_power;
         energies_.fracture += s.fracture_dissipation;
     }
+    // These forces act over the second half kick of this step (the first half kick of the
+    // next one is booked by step(), see bookFirstHalfKick).
+    energies_.bond_damping += force_rates_.bond_damping * 0.5 * dt;
     energies_.bond_strain = strain;
     int broken = 0, open = 0;
     for (int k = 0; k < interfaces_.size(); ++k) {
@@ -1130,7 +1134,7 @@ ContactItemOutputs itemOutputs(Arrays& items)
 
 // Sums over contact items in item order (deterministic); returns the active count.
 template <class Arrays>
-int sumContactEnergies(const Arrays& items, double dt, DemEnergies& energies, int& intersections)
+int sumContactEnergies(const Arrays& items, DemEnergies& energies, double& damping_power, int& intersections)
 {
     int active = 0;
     for (int i = 0; i < items.size(); ++i) {
@@ -1138,7 +1142,7 @@ int sumContactEnergies(const Arrays& items, double dt, DemEnergies& energies, in
         ++active;
         intersections += items.status[i] == contactCoresIntersect;
         energies.contact_elastic += items.elastic_energy[i];
-        energies.contact_damping += items.damping_power[i] * dt;
+        damping_power += items.damping_power[i];
         energies.friction += items.friction_dissipation[i];
     }
     return active;
@@ -1188,15 +1192,17 @@ void DemModel::runContactKernels(double dt)
     energies_.contact_elastic = 0.0;
     counters_.core_intersections = 0;
     counters_.contacts_active = 0;
+    force_rates_.contact_damping = 0.0;
     for (const ContactBlockSums& s : pair_block_sums_) {
         energies_.contact_elastic += s.elastic_energy;
-        energies_.contact_damping += s.damping_power * dt;
+        force_rates_.contact_damping += s.damping_power;
         energies_.friction += s.friction_dissipation;
         counters_.contacts_active += s.active;
         counters_.core_intersections += s.cores_intersect;
     }
-    counters_.wall_contacts_active =
-        sumContactEnergies(wall_items_, dt, energies_, counters_.core_intersections);
+    counters_.wall_contacts_active = sumContactEnergies(wall_items_, energies_, force_rates_.contact_damping,
+                                                        counters_.core_intersections);
+    energies_.contact_damping += force_rates_.contact_damping * 0.5 * dt;  // second half kick
     for (WallState& w : walls_) {
         w.reaction = w.reaction_torque = Vec3{};
         w.power = 0.0;
@@ -1209,7 +1215,10 @@ void DemModel::runContactKernels(double dt)
         w.reaction_torque -=
             cross(cells_.position[wall_items_.cell[i]] - w.origin, force) + wall_items_.torque_on_cell[i];
         w.power += wall_items_.wall_power[i];
-        energies_.wall_work += wall_items_.wall_power[i] * dt;
+    }
+    for (WallState& w : walls_) {  // second half kick
+        w.work += w.power * 0.5 * dt;
+        energies_.wall_work += w.power * 0.5 * dt;
     }
 }
 
@@ -1377,10 +1386,28 @@ void DemModel::updateStatus(int non_finite_cell)
         status_.code = DemStatusCode::energyGrowth;
 }
 
+// The power of the velocity-dependent forces (dashpots) and of the walls is booked half a
+// step at a time, with the forces of the half kick it acts in: the first half kick of a
+// step uses the forces of the last evaluation, which the previous step booked for its own
+// second half only, or a re-evaluation after the caller changed a wall's motion (with the
+// velocities after the kick and the new wall velocity: a crusher re-evaluates every step,
+// and booking the step's own evaluation over the whole step left a quarter of the liners'
+// dashpot losses out).
+void DemModel::bookFirstHalfKick(double dt)
+{
+    energies_.bond_damping += force_rates_.bond_damping * 0.5 * dt;
+    energies_.contact_damping += force_rates_.contact_damping * 0.5 * dt;
+    for (WallState& w : walls_) {
+        w.work += w.power * 0.5 * dt;
+        energies_.wall_work += w.power * 0.5 * dt;
+    }
+}
+
 double DemModel::step(double dt)
 {
     if (!forces_valid_) computeForces(0.0);
     last_dt_ = dt;
+    bookFirstHalfKick(dt);
     kickDrift(dt);
     moveWalls(dt);
     computeForces(dt);

@@ -141,6 +141,14 @@ public:
     // delivers to the cells (sum of contact force . wall velocity at the contact), this step.
     Vec3 wallReactionTorque(int w) const { return walls_[w].reaction_torque; }
     double wallPower(int w) const { return walls_[w].power; }
+    // Work wall w has done on the cells since the start [J] (booked half a step at a time
+    // with the forces of each half kick, as energies().wall_work).
+    double wallWork(int w) const { return walls_[w].work; }
+    // Powers of the last force evaluation that the next step books over its first half
+    // kick (restart files keep them, so that a continued run books what an uninterrupted
+    // one does).
+    const DemForceRates& forceRates() const { return force_rates_; }
+    void setForceRates(const DemForceRates& rates) { force_rates_ = rates; }
 
     // ---- Time stepping -----------------------------------------------------
     // pi R sqrt(rho/G) / (0.1631 nu + 0.8766), R the smallest volume-equivalent radius.
@@ -229,6 +237,7 @@ private:
     void runContactKernels(double dt);
     void gatherForces();
     void kickDrift(double dt);
+    void bookFirstHalfKick(double dt);
     void kick(double dt);
     void moveWalls(double dt);
     BondKernelArgs bondArgs();
@@ -293,6 +302,7 @@ private:
 
     double time_ = 0.0;
     DemEnergies energies_;
+    DemForceRates force_rates_;
     double initial_balance_ = 0.0;
     double energy_scale_ = 0.0;
     double energy_floor_ = 0.0;  // fracture energy of one average bond: the check's noise floor

@@ -140,6 +140,13 @@ struct DemEnergies {
     double balance() const { return kinetic() + stored() + dissipated() + exchanged - externalWork(); }
 };
 
+// Powers of the velocity-dependent forces of the last evaluation [W], booked over the
+// half kicks those forces act in (DemModel::step).
+struct DemForceRates {
+    double bond_damping = 0.0;
+    double contact_damping = 0.0;
+};
+
 struct WallState {
     int kind = wallPlate;
     Vec3 origin;             // plate point / surface pivot, world [m]
@@ -151,6 +158,7 @@ struct WallState {
     Vec3 reaction;           // force the cells exert on the wall, this step [N]
     Vec3 reaction_torque;    // torque of those forces about origin, this step [N m]
     double power = 0.0;      // power the wall delivers to the cells, this step [W]
+    double work = 0.0;       // work it has done on the cells since the start [J]
     int first_triangle = 0;  // into DemModel's triangle vertex array (3 per triangle)
     int n_triangles = 0;
 };

@@ -270,6 +270,10 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
     s.put("walls", walls);
     s.put("energies", energyArray(model.energies()));
     s.putScalar("energyExchanged", model.energies().exchanged);
+    // The powers the next step books over its first half kick (DemModel::step).
+    std::vector<double> rates{model.forceRates().bond_damping, model.forceRates().contact_damping};
+    for (int k = 0; k < model.nWalls(); ++k) rates.push_back(model.wallPower(k));
+    s.put("forceRates", rates);
     s.putScalar("initialBalance", model.initialBalance());
     s.putScalar("time", model.time());
     s.put("step", std::vector<std::int64_t>{step});
@@ -337,6 +341,17 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
         ws.initial_origin = {a[13], a[14], a[15]};
         ws.reaction = {a[16], a[17], a[18]};
         model.setWallState(k, ws);
+    }
+    // States written before 2026-12-02 have no powers: the first half kick after the
+    // restart then books none (the energy columns differ from an uninterrupted run there).
+    if (s.has("forceRates")) {
+        const auto& rates = s.doubles("forceRates", 2L + model.nWalls());
+        model.setForceRates({rates[0], rates[1]});
+        for (int k = 0; k < model.nWalls(); ++k) {
+            WallState ws = model.wall(k);
+            ws.power = rates[2 + k];
+            model.setWallState(k, ws);
+        }
     }
     DemRestart r;
     r.step = s.integers("step", 1)[0];

@@ -736,13 +736,15 @@ void CudaDemModel::computeForces(double dt)
     check(cudaGetLastError(), "bond kernel");
     double strain = 0.0;
     int broken = 0, open = 0;
+    h.force_rates_.bond_damping = 0.0;
     for (const BondSums& s : downloadPartials(d.bond_sums, bond_blocks)) {
         strain += s.strain_energy;
-        h.energies_.bond_damping += s.damping_power * dt;
+        h.force_rates_.bond_damping += s.damping_power;
         h.energies_.fracture += s.fracture_dissipation;
         broken += s.bonds_broken;
         open += s.interfaces_open;
     }
+    h.energies_.bond_damping += h.force_rates_.bond_damping * 0.5 * dt;  // second half kick (DemModel::step)
     h.energies_.bond_strain = strain;
     h.counters_.bonds_broken = broken;
     h.counters_.interfaces_open = open;
@@ -817,6 +819,7 @@ void CudaDemModel::computeForces(double dt)
 
     h.energies_.contact_elastic = 0.0;
     h.counters_.core_intersections = 0;
+    h.force_rates_.contact_damping = 0.0;
     for (auto* counter : {&h.counters_.contacts_active, &h.counters_.wall_contacts_active}) {
         const bool pairs = counter == &h.counters_.contacts_active;
         int active = 0;
@@ -825,11 +828,12 @@ void CudaDemModel::computeForces(double dt)
             active += s.active;
             h.counters_.core_intersections += s.cores_intersect;
             h.energies_.contact_elastic += s.elastic_energy;
-            h.energies_.contact_damping += s.damping_power * dt;
+            h.force_rates_.contact_damping += s.damping_power;
             h.energies_.friction += s.friction_dissipation;
         }
         *counter = active;
     }
+    h.energies_.contact_damping += h.force_rates_.contact_damping * 0.5 * dt;
 
     // Wall reactions.
     const int n_walls = h.nWalls();
@@ -845,7 +849,8 @@ void CudaDemModel::computeForces(double dt)
             wall.reaction = reactions[w].reaction;
             wall.reaction_torque = reactions[w].reaction_torque;
             wall.power = reactions[w].power;
-            h.energies_.wall_work += reactions[w].power * dt;
+            wall.work += reactions[w].power * 0.5 * dt;
+            h.energies_.wall_work += reactions[w].power * 0.5 * dt;
         }
     }
 
@@ -930,6 +935,7 @@ double CudaDemModel::step(double dt)
     DemModel& h = host_;
     if (!h.forces_valid_) computeForces(0.0);
     h.last_dt_ = dt;
+    h.bookFirstHalfKick(dt);
     const int n = h.cells_.size();
     const IntegrationArgs a =
         integrationArgs(h.parameters_, d.mass, d.principal_inertia, d.force, d.torque, d.rotation, d.position,

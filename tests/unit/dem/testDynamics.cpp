@@ -205,7 +205,8 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
     restarted.setCellState(cells.position, cells.velocity, cells.orientation, cells.angular_velocity);
     restarted.setBondHistory(original.bonds());
     restarted.setContactHistory(original.contactPairs(), original.wallContacts());
-    restarted.setWallState(0, original.wall(0));
+    restarted.setWallState(0, original.wall(0));     // with the wall's power of the last evaluation
+    restarted.setForceRates(original.forceRates());  // dashpot powers booked over the next half kick
     restarted.setClock(original.time(), original.counters().steps, original.energies(),
                        original.initialBalance());
     restarted.setCellForces(cells.force, cells.torque);
