@@ -557,7 +557,7 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                 Vec3 on_ridge, unused;
                 closestPointsOfSegments(r0, r1, core.position, core.position, on_ridge, unused);
                 const int n_entries = norm(on_ridge - core.position) < reach ? n_edge_entries : 0;
-                const Vec3 ridge = normalised(r1 - r0);
+                const Vec3 ridge = n_entries > 0 ? normalised(r1 - r0) : Vec3{};
                 for (int j = 0; j + 1 < n_entries; j += 2) {
                     const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
                     // The angle weight w(theta) of the pair: 0 while the edges are within

@@ -504,7 +504,8 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
                         arrayBytes(c.angular_velocity) + arrayBytes(c.force) + arrayBytes(c.torque) +
                         arrayBytes(c.mass) + arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) +
                         arrayBytes(c.bounding_radius) + arrayBytes(c.core_vertex_offset) +
-                        arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) + arrayBytes(c.core_edges);
+                        arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) +
+                        arrayBytes(c.core_edges);
     total += n * (sizeof(Mat3) + 2 * sizeof(Vec3));  // rotation, world angular velocity, position at build
     const InterfaceArrays& f = host.interfaces_;
     total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
