@@ -44,7 +44,7 @@ parameters
 }
 tied            { cohesion { entry bond/cohesion; factor 1.5; of tensileStrength; } }
 responseSurface { levels 3; }
-bobyqa          { maxEvaluations 30; initialStep 0.5; tolerance 1e-3; }
+bobyqa          { maxEvaluations $(bySize 30 6); initialStep 0.5; tolerance 1e-3; }
 target
 {
     response           "postProcessing/plateForce/0/plateForce.dat";
@@ -75,7 +75,8 @@ grep "BOBYQA stopped\|calibrated" log.bobyqa
 [ "$before" = "$(sha1sum bdt/constant/rockProperties)" ] || fail "-noWrite changed rockProperties"
 read -r e s < <(awk '$1 == "E" { e = $2 } $1 == "tensileStrength" { s = $2 } END { print e + 0, s + 0 }' FS='[ ;]+' \
     <(sed 's/^ *//' calibratedValues.bobyqa))
-check bobyqa "$e" "$s"
+# Small size (sanitized CI pass): 6 evaluations run BOBYQA's every step but cannot converge.
+if fullSize "BOBYQA's recovery within 5 % (6 evaluations)"; then check bobyqa "$e" "$s"; fi
 
 # Resuming: a second run reuses every simulation.
 calibrateModel -case . -noWrite > log.again 2>&1 || fail "second run: $(tail -3 log.again)"

@@ -10,7 +10,8 @@ source "$(dirname "$0")/../caseTestFunctions"
 export OMP_WAIT_POLICY=passive  # 2 threads on shared cores: do not spin
 copyTutorial tutorials/BDT/graniteFEM "$work/base"
 cd "$work/base"
-caseDict -case . system/feMeshDict -entry elementSize -set 2.0e-3 > /dev/null
+# Small size (sanitized CI pass): 4 mm elements, too coarse to localise one crack.
+caseDict -case . system/feMeshDict -entry elementSize -set "$(bySize 2.0e-3 4.0e-3)" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set 2.5e-4 > /dev/null
 meshRock > log.meshRock 2>&1 || fail "meshRock: $(tail -3 log.meshRock)"
 dat=postProcessing/plateForce/0/plateForce.dat
@@ -32,8 +33,10 @@ awk -F'\t' '!/^#/ { f = $3; if (f > peak) { peak = f; tpeak = $1 } last = f }
 [ -s "$work/threads1/postProcessing/extensometer/0/extensometer.dat" ] || fail "no extensometer.dat"
 checkVtk "$work/threads1/VTK/fem_0.vtu" tets "$(grep -o '^Mesh: [0-9]*' "$log" | cut -d' ' -f2)"
 share=$(sed -n 's/.* \([0-9.]*\) % of it within .*/\1/p' "$log")
-awk -v s="$share" 'BEGIN { exit !(s > 60) }' || fail "only $share % of the cracked volume near the loaded mid-plane"
-echo "ok: $share % of the cracked volume within D/8 of the loaded mid-plane"
+if fullSize "one main crack ($share % of the cracked volume near the mid-plane)"; then
+    awk -v s="$share" 'BEGIN { exit !(s > 60) }' || fail "only $share % of the cracked volume near the loaded mid-plane"
+    echo "ok: $share % of the cracked volume within D/8 of the loaded mid-plane"
+fi
 
 # 2 threads with a restart: stop at the first write time of the uninterrupted run after
 # 40 % of it (the step is computed, so write times are not round numbers), then continue.

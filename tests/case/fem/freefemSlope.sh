@@ -4,8 +4,8 @@
 # (2 x 5 degrees): the slope force / extensometer shortening (l = 20 mm) within 5 %.
 # Usage: freefemSlope.sh <scratch> [3D element size] [2D element size].
 source "$(dirname "$0")/../caseTestFunctions"
-h3="${2:-1.5e-3}"
-h2="${3:-0.5e-3}"
+h3="${2:-$(bySize 1.5e-3 2.5e-3)}"  # small size (sanitized CI pass): coarser meshes
+h2="${3:-$(bySize 0.5e-3 1.0e-3)}"
 thickness=4.48e-3
 command -v FreeFem++ > /dev/null || fail "FreeFem++ not found (Debian package freefem++)"
 mkdir -p "$work/freefem"

@@ -10,6 +10,11 @@ meshRock > log.meshRock 2>&1 || fail "meshRock"
 voronoiMesh > log.voronoiMesh 2>&1 || fail "voronoiMesh"
 
 runner=""; [ -z "${DISPLAY:-}" ] && runner="xvfb-run -a"
+# Sanitized builds: Mesa's OpenGL driver (swrast_dri.so, loaded by dlopen) leaks two 56-byte
+# blocks and is unloaded before LeakSanitizer reports, so they come without a library name to
+# suppress (LD_DEBUG=files shows the driver destroyed at exit). Leak checking is off for
+# renderVtk alone; address and undefined-behaviour errors still stop it. No effect otherwise.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 $runner renderVtk VTK/voronoiMesh.vtu -field volume -title "cell volume" -out pictures/volume.png \
     > log.renderVtk 2>&1 || fail "renderVtk: $(cat log.renderVtk)"
 [ -s pictures/volume.png ] || fail "no PNG"
