@@ -25,7 +25,10 @@ namespace {
 
 WallMotion wallMotion(const MantlePose& p)
 {
-    return {p.translation, quatFromRotationVector(p.rotation_vector), p.velocity, p.angular_velocity};
+    // The spin about the mean axis z first, then the gyration (crusherGeometry.hpp).
+    return {p.translation,
+            quatFromRotationVector(p.rotation_vector) * quatFromRotationVector(Vec3{0.0, 0.0, p.spin_angle}),
+            p.velocity, p.angular_velocity};
 }
 
 // Shapes of the inserted cells for VTK (body-frame polyhedra), kept in step with the model.
@@ -111,6 +114,8 @@ struct CrusherRun::Impl {
     // Means over the steps since the last machine.dat row.
     Vec3 sumForce, sumTorque;
     double sumPower = 0.0;
+    MantleSpin spin{MantleSpinSpec{}};  // free spin of the mantle (fixed: stays at rest)
+    MantlePose pose;                    // of the mantle during the current step
     long sampleSteps = 0;
 
     explicit Impl(const Application& a)
@@ -121,6 +126,7 @@ struct CrusherRun::Impl {
         useCuda = readCudaBackend(controlDict);
         parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
         loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
+        spin = MantleSpin(loading.spin);
         parameters.gravity = loading.gravity;
         if (time.restarting())
             throw UserError(controlDict.fileName() +
@@ -176,7 +182,8 @@ struct CrusherRun::Impl {
     void prepareStep()
     {
         const double t = model->time();
-        model->setWallMotion(mantle, wallMotion(mantlePose(loading.machine.kinematics, t)));
+        pose = mantlePose(loading.machine.kinematics, t, spin.angle(), spin.rate());
+        model->setWallMotion(mantle, wallMotion(pose));
         if (choke >= 0 && !chokeLowered && t >= loading.choke.duration) {
             WallState w = model->wall(choke);
             w.origin.z = loading.destructor.below - 1e3;  // lowered far below everything
@@ -210,15 +217,20 @@ struct CrusherRun::Impl {
 
     void afterStep(TimeSeriesWriter& discharge)
     {
-        const double power = model->wallPower(mantle);
         // The model books the mantle's work half a step at a time with the forces of each
         // half kick (the mantle moves every step, so the forces are re-evaluated before it).
         mantleWork = model->wallWork(mantle);
         const Vec3 force = model->wallReaction(mantle);
         const Vec3 origin = model->wall(mantle).origin;
-        sumForce += force;
-        sumTorque +=
+        const Vec3 torque =
             model->wallReactionTorque(mantle) + cross(origin - loading.machine.kinematics.pivot, force);
+        // The drive delivers the gyration's power: what the wall gives the rocks plus what
+        // the rocks' torque takes from the spin (mantleSpin.hpp); with spin fixed the rate is 0.
+        const double axialTorque = dot(pose.rotation * Vec3{0.0, 0.0, 1.0}, torque);
+        const double power = model->wallPower(mantle) + spin.rate() * axialTorque;
+        spin.advance(axialTorque, time.deltaT());
+        sumForce += force;
+        sumTorque += torque;
         sumPower += power;
         ++sampleSteps;
         if (step % loading.destructor.interval != 0) return;
@@ -241,7 +253,8 @@ struct CrusherRun::Impl {
                 {"massInside", "kg"}, {"massFed", "kg"},     {"massDischarged", "kg"}, {"cells", "-"},
                 {"rocksFed", "-"},    {"fragmentsOut", "-"}, {"brokenBonds", "-"},     {"mantleWork", "J"},
                 {"kinetic", "J"},     {"stored", "J"},       {"dissipated", "J"},      {"fracture", "J"},
-                {"exchanged", "J"},   {"gravityWork", "J"},  {"balanceError", "J"}};
+                {"exchanged", "J"},   {"gravityWork", "J"},  {"balanceError", "J"},    {"spinRate", "rad/s"},
+                {"spinEnergy", "J"},  {"bearingLoss", "J"},  {"driveWork", "J"}};
     }
 
     std::vector<double> machineRow()
@@ -270,7 +283,11 @@ struct CrusherRun::Impl {
                                 e.fracture,
                                 e.exchanged,
                                 e.gravity_work,
-                                e.balance() - model->initialBalance()};
+                                e.balance() - model->initialBalance(),
+                                spin.rate(),
+                                spin.kineticEnergy(),
+                                spin.bearingDissipated(),
+                                mantleWork + spin.torqueWork()};
         sumForce = sumTorque = Vec3{};
         sumPower = 0.0;
         sampleSteps = 0;
@@ -297,6 +314,18 @@ struct CrusherRun::Impl {
 CrusherRun::CrusherRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
 CrusherRun::~CrusherRun() = default;
 
+namespace {
+std::string spinText(const MantleSpinSpec& s)
+{
+    if (!s.free) return "spin fixed";
+    char buffer[160];
+    std::snprintf(buffer, sizeof(buffer),
+                  "spin free (inertia %.4g kg m^2 about the axis, bearing drag %.4g N m s)", s.inertia,
+                  s.bearing_damping);
+    return buffer;
+}
+}  // namespace
+
 void CrusherRun::printSetup() const
 {
     const Impl& r = *impl_;
@@ -304,12 +333,12 @@ void CrusherRun::printSetup() const
     const FeedSpec& f = r.loading.feed;
     const MachineSpec& m = r.loading.machine;
     std::printf(
-        "Machine: mantle gyrating about (%g %g %g) m, eccentric angle %.4f deg, %.4g rpm, spin fixed; "
+        "Machine: mantle gyrating about (%g %g %g) m, eccentric angle %.4f deg, %.4g rpm, %s; "
         "CSS %.1f mm, discharge at z = %.4g m\n",
         m.kinematics.pivot.x, m.kinematics.pivot.y, m.kinematics.pivot.z,
         180.0 / 3.14159265358979323846 * m.kinematics.eccentric_angle,
-        m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), 1e3 * m.closed_side_setting,
-        m.discharge_level);
+        m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), spinText(r.loading.spin).c_str(),
+        1e3 * m.closed_side_setting, m.discharge_level);
     std::printf(
         "Feed rock %s: %d cells, %d bonds, sieve size %.4g mm, volume-equivalent diameter %.4g mm; "
         "sizes %.4g-%.4g mm at %.4g kg/s (at most %.4g kg)\n",

@@ -28,7 +28,7 @@ fs::path casePath(const fs::path& caseDir, const std::string& entry)
     return p.is_absolute() ? p : caseDir / p;
 }
 
-void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, bool& spin_fixed)
+void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, MantleSpinSpec& spin)
 {
     m.mantle_stl = casePath(caseDir, d.getOrDefault<std::string>("mantle", "constant/triSurface/mantle.stl"));
     m.concave_stl =
@@ -38,13 +38,19 @@ void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, b
     for (const fs::path& p : {m.mantle_stl, m.concave_stl, kinematics})
         if (!fs::exists(p))
             throw UserError("missing " + p.string() + "; run meshCrusher to make the crusher surfaces");
-    const std::string spin = d.found("spin") ? d.getWord("spin", {"fixed", "free"}) : "fixed";
-    if (spin == "free")
-        throw UserError(
-            d.fileName() +
-            ": machine/spin free is not implemented (it needs the torque balance about the mantle "
-            "axis); use spin fixed");
-    spin_fixed = true;
+    // Free spin needs the mantle's inertia about its axis and the bearing drag: no defaults,
+    // both depend on the machine (docs/user-guide-crusher.md gives the CH660 estimate).
+    spin.free = d.found("spin") && d.getWord("spin", {"fixed", "free"}) == "free";
+    if (spin.free) {
+        static const Dimensions inertia = Dimensions::fromUnits("kg m^2");
+        static const Dimensions torquePerRate = Dimensions::fromUnits("N m s");
+        if (!d.found("spinInertia") || !d.found("bearingDamping"))
+            throw UserError(d.fileName() +
+                            ": machine/spin free needs spinInertia [kg m^2] (the mantle's moment of "
+                            "inertia about its axis) and bearingDamping [N m s] (the bearing's drag)");
+        spin.inertia = d.getScalar("spinInertia", Bounds::positive(), &inertia);
+        spin.bearing_damping = d.getScalar("bearingDamping", Bounds::nonNegative(), &torquePerRate);
+    }
     const Dictionary k = Dictionary::readFile(kinematics);
     m.kinematics.pivot = k.get<Vec3>("pivot");
     m.kinematics.eccentric_angle = k.getScalar("eccentricAngle", Bounds::nonNegative());
@@ -80,7 +86,7 @@ void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
 MachineLoading readMachineLoading(const Dictionary& d, const fs::path& caseDir)
 {
     MachineLoading l;
-    readMachine(d.subDict("machine"), caseDir, l.machine, l.spin_fixed);
+    readMachine(d.subDict("machine"), caseDir, l.machine, l.spin);
     readFeed(d.subDict("feed"), caseDir, l.feed);
     if (d.found("choke")) {
         const Dictionary& c = d.subDict("choke");

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/vec3.hpp"
+#include "crusher/mantleSpin.hpp"
 #include "geometry/crusherGeometry.hpp"
 
 namespace rockfrac {
@@ -49,7 +50,7 @@ struct MachineLoading {
     ChokeSpec choke;
     DestructorSpec destructor;
     Vec3 gravity;
-    bool spin_fixed = true;  // the mantle does not spin about its axis (free spin: not implemented)
+    MantleSpinSpec spin;  // machine/spin: fixed (default) or free with inertia and bearing drag
 };
 
 // True when constant/loading describes a machine (has a `machine` section).

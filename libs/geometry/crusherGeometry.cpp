@@ -268,6 +268,18 @@ MantlePose mantlePose(const CrusherKinematics& k, double t)
     return pose;
 }
 
+MantlePose mantlePose(const CrusherKinematics& k, double t, double spin_angle, double spin_rate)
+{
+    // x = T + R_g Rz(psi) x0: d/dt = T' + omega_g x (x - T) + R_g (psi' z x Rz x0)
+    //   = T' + (omega_g + psi' R_g z) x (x - T); T and T' are the gyration's.
+    MantlePose pose = mantlePose(k, t);
+    const Vec3 axis = pose.rotation * Vec3{0.0, 0.0, 1.0};
+    pose.rotation = pose.rotation * rotationFromVector(Vec3{0.0, 0.0, spin_angle});
+    pose.spin_angle = spin_angle;
+    pose.angular_velocity = pose.angular_velocity + spin_rate * axis;
+    return pose;
+}
+
 Profile tiltInMeridian(const Profile& mantle, double pivotZ, double angle)
 {
     const double c = std::cos(angle), s = std::sin(angle);

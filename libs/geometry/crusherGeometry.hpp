@@ -62,14 +62,20 @@ struct CrusherKinematics {
 // Rigid pose of the mantle at time t relative to its mean (untilted) position, in the
 // form of DemModel's WallMotion: x = translation + rotation x_mean; rotation_vector
 // is the axis-angle of `rotation` (quatFromRotationVector makes the DEM quaternion).
+// With spin (free spin, libs/crusher/mantleSpin.hpp) the mantle is first turned by the spin
+// angle psi about the z axis (its own axis in the mean position), then gyrated:
+// rotation = R_gyration Rz(psi); the translation is unchanged and the angular velocity
+// gains psi' times the tilted axis.
 struct MantlePose {
-    Mat3 rotation;
-    Vec3 rotation_vector;
-    Vec3 translation;       // pivot - rotation * pivot [m]
+    Mat3 rotation;          // R_gyration Rz(spin_angle)
+    Vec3 rotation_vector;   // axis-angle of R_gyration (the spin is spin_angle about z, applied first)
+    double spin_angle = 0;  // [rad]
+    Vec3 translation;       // pivot - R_gyration * pivot [m]
     Vec3 velocity;          // of the point `translation` [m/s]
-    Vec3 angular_velocity;  // world frame [rad/s] = Omega (z - rotation z)
+    Vec3 angular_velocity;  // world frame [rad/s] = Omega (z - R_gyration z) + spin_rate R_gyration z
 };
 MantlePose mantlePose(const CrusherKinematics& k, double t);
+MantlePose mantlePose(const CrusherKinematics& k, double t, double spin_angle, double spin_rate);
 
 // The mantle profile as it lies in the meridian half-plane of the closed side
 // (angle = +alpha: points below the pivot move out) or of the open side (-alpha).

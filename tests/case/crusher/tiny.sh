@@ -7,10 +7,10 @@ source "$(dirname "$0")/../caseTestFunctions"
 copyTutorial tutorials/CH660/tiny "$work/tiny"
 cd "$work/tiny"
 export OMP_NUM_THREADS=1
-# Small size (the sanitized CI pass): 0.015 s instead of 0.05 s; the rocks are fed and the
-# mantle nips one of them (mean power 0.32 W), nothing is discharged yet (the discharge is
+# Small size (the sanitized CI pass): 12.5 ms instead of 0.05 s; the rocks are fed and the
+# mantle nips one of them from 11 ms on, nothing is discharged yet (the discharge is
 # the unit test test_crusher "[feed]", which the sanitized pass runs in full).
-caseDict -case . system/controlDict -entry endTime -set "$(bySize 0.05 0.015)" > /dev/null
+caseDict -case . system/controlDict -entry endTime -set "$(bySize 0.05 0.0125)" > /dev/null
 ./Allrun > /dev/null || fail "Allrun failed: $(tail -3 log.bondedDemFoam*)"
 # The solver's own balance (full precision; the summary's columns are rounded to ~10 digits).
 line=$(grep "^Mass: fed" log.bondedDemFoam) || fail "no mass balance line in log.bondedDemFoam"
