@@ -116,6 +116,7 @@ struct CrusherRun::Impl {
     double sumPower = 0.0;
     MantleSpin spin{MantleSpinSpec{}};  // free spin of the mantle (fixed: stays at rest)
     MantlePose pose;                    // of the mantle during the current step
+    double lastPower = 0.0;             // the drive's power in the last step [W]
     long sampleSteps = 0;
 
     explicit Impl(const Application& a)
@@ -228,6 +229,7 @@ struct CrusherRun::Impl {
         // the rocks' torque takes from the spin (mantleSpin.hpp); with spin fixed the rate is 0.
         const double axialTorque = dot(pose.rotation * Vec3{0.0, 0.0, 1.0}, torque);
         const double power = model->wallPower(mantle) + spin.rate() * axialTorque;
+        lastPower = power;
         spin.advance(axialTorque, time.deltaT());
         sumForce += force;
         sumTorque += torque;
@@ -305,8 +307,8 @@ struct CrusherRun::Impl {
     {
         char buffer[200];
         std::snprintf(buffer, sizeof(buffer), "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d",
-                      model->cells().size(), factory->massFed(), massDischarged,
-                      1e-3 * model->wallPower(mantle), model->counters().bonds_broken);
+                      model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
+                      model->counters().bonds_broken);
         return buffer;
     }
 };

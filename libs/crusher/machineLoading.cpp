@@ -1,5 +1,7 @@
 #include "crusher/machineLoading.hpp"
 
+#include <cmath>
+
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
 
@@ -58,6 +60,12 @@ void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, M
     m.kinematics.phase = k.getScalarOrDefault("closedSideAzimuth", 0.0, Bounds::any());
     m.discharge_level = k.getScalar("dischargeLevel", Bounds::any());
     m.closed_side_setting = k.getScalar("closedSideSetting", Bounds::positive());
+    // The spin turns the mantle about the z axis of its mean position (mantlePose), which
+    // must then pass through the pivot (meshCrusher writes it so).
+    if (spin.free && std::hypot(m.kinematics.pivot.x, m.kinematics.pivot.y) > 1e-12)
+        throw UserError(kinematics.string() +
+                        ": pivot must lie on the z axis (0 0 z) for machine/spin free: the mantle turns "
+                        "about the axis of its mean position");
 }
 
 void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)

@@ -30,6 +30,10 @@ public:
     // angle with the new rate (symplectic Euler). Books the torque's work and the bearing's
     // loss with the mean rate of the step, so that
     //   torqueWork = kineticEnergy() + bearingDissipated   (exactly, up to round-off).
+    // That is the spin's own ledger. The wall moves during a step with the rate set before
+    // it (the rocks' work is booked with that rate), the angle then advances with the new
+    // one: against the rocks' books the spin's differ by O(dt). A step in which the rate
+    // changes sign may book a slightly negative bearing loss (the price of the exact identity).
     void advance(double axial_torque, double dt);
 
     bool free() const { return spec_.free; }

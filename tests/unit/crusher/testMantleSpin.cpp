@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "../dem/boxMeshes.hpp"
 #include "crusher/mantleSpin.hpp"
+#include "dem/demModel.hpp"
 #include "geometry/crusherGeometry.hpp"
 
 using namespace rockfrac;
@@ -100,5 +102,44 @@ TEST_CASE("mantle spin: constant torque against the bearing drag, energies booke
         CHECK(s.rate() == 0.0);
         CHECK(s.angle() == 0.0);
         CHECK(s.torqueWork() == 0.0);
+    }
+}
+
+TEST_CASE(
+    "a spinning wall drags a resting cell: the rocks' axial torque opposes the spin and "
+    "the wall's power is the spin's alone",
+    "[crusher][spin]")
+{
+    // A flat triangulated floor (normal +z) turning about the z axis at omega, one box cell
+    // pressed on it off the axis. The wall slides under the cell, friction drags the cell
+    // along and holds the wall back: the cells' torque on the wall about the axis (what
+    // crusherRun feeds to I psi'' = tau_a - c psi') must be against omega, and the wall's
+    // power on the cells must be -omega tau_a, so that the drive's share
+    // P_wall + psi' tau_a of a spin-only motion is zero.
+    DemParameters p;
+    p.gravity = {0.0, 0.0, 0.0};
+    const double cell = 0.01, rd = 5e-4, overlap = 2e-5, omega = 2.0;
+    const std::vector<Vec3> floor{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    const Vec3 pivot{0.0, 0.0, 1.5};  // any point on the axis
+    for (double sign : {1.0, -1.0}) {
+        DemModel model(test::boxBlockMesh(1, 1, 1, {cell, cell, cell}, rd, false), p);
+        const int w = model.addTriSurface(floor, {{{0, 1, 2}}, {{0, 2, 3}}});
+        model.setCellPose(0, {0.3, 0.1, 0.5 * cell - overlap}, Quat{});
+        model.setCellVelocity(0, {}, {});
+        model.setWallMotion(w, WallMotion{{}, Quat{}, {}, {0.0, 0.0, sign * omega}});
+        for (int i = 0; i < 5; ++i) model.evaluateForces(1e-5);  // the tangential spring loads
+        const Vec3 force = model.wallReaction(w);
+        const Vec3 torque = model.wallReactionTorque(w) + cross(model.wall(w).origin - pivot, force);
+        const double axial = dot(Vec3{0, 0, 1}, torque);
+        const Vec3 friction =
+            model.cells().force[0] - dot(model.cells().force[0], Vec3{0, 0, 1}) * Vec3{0, 0, 1};
+        INFO("spin " << sign * omega << " rad/s: cell force " << model.cells().force[0].x << " "
+                     << model.cells().force[0].y << " " << model.cells().force[0].z << ", axial torque "
+                     << axial << " N m, wall power " << model.wallPower(w) << " W");
+        REQUIRE(norm(friction) > 1e-3 * std::abs(model.cells().force[0].z));
+        CHECK(sign * axial < 0.0);
+        CHECK(model.wallPower(w) + sign * omega * axial ==
+              Approx(0.0).margin(1e-9 * std::abs(model.wallPower(w))));
+        CHECK(model.wallPower(w) > 0.0);  // the sliding floor drags the cell along
     }
 }
