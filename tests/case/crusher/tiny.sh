@@ -1,17 +1,28 @@
 #!/usr/bin/env bash
-# CH660 tiny: three small rocks beside the mantle in the parallel zone; the mass
-# balance closes (fed = inside + discharged) and the mantle draws power (it nips them).
-# About a minute on one core (90 cells). One thread: with 90 cells more threads only
-# wait on each other (and spin on a loaded machine).
+# CH660 tiny: three small rocks beside the mantle in the parallel zone; the mass balance
+# closes (fed = inside + discharged) and the mantle draws power (it nips them). The mantle
+# is free to spin here (the tutorial's `spin fixed` is the same code with the spin at rest,
+# tests/unit/crusher "[spin]"): the nipped rocks turn it about its axis (I psi'' = tau_a -
+# c psi', libs/crusher/mantleSpin.hpp) and machine.dat books the drive's work as the wall's
+# work plus the spin energy plus the bearing loss. Free spin without the bearing drag, or
+# with an inertia in the wrong unit, is refused with one line and nothing written.
+# About a minute on one core (90 cells). One thread: with 90 cells more threads only wait
+# on each other (and spin on a loaded machine).
 source "$(dirname "$0")/../caseTestFunctions"
 copyTutorial tutorials/CH660/tiny "$work/tiny"
 cd "$work/tiny"
 export OMP_NUM_THREADS=1
 # Small size (the sanitized CI pass): 12.5 ms instead of 0.05 s; the rocks are fed and the
-# mantle nips one of them from 11 ms on, nothing is discharged yet (the discharge is
-# the unit test test_crusher "[feed]", which the sanitized pass runs in full).
+# mantle nips one of them from 11 ms on, nothing is discharged yet (the discharge is the
+# unit test test_crusher "[feed]", which the sanitized pass runs in full).
 caseDict -case . system/controlDict -entry endTime -set "$(bySize 0.05 0.0125)" > /dev/null
+# An estimate for the CH660 head (about 1.5 t, radius 0.55 m: I = 0.3 m R^2 = 140 kg m^2) and
+# a bearing drag that stops a free spin within about a second (c = I / 1 s).
+caseDict -case . constant/loading -entry machine/spin -set free > /dev/null
+caseDict -case . constant/loading -entry machine/spinInertia -add "[kg m^2] 140" > /dev/null
+caseDict -case . constant/loading -entry machine/bearingDamping -add "[N m s] 140" > /dev/null
 ./Allrun > /dev/null || fail "Allrun failed: $(tail -3 log.bondedDemFoam*)"
+grep -q "spin free (inertia 140 kg m^2" log.bondedDemFoam || fail "the log does not report the free spin"
 # The solver's own balance (full precision; the summary's columns are rounded to ~10 digits).
 line=$(grep "^Mass: fed" log.bondedDemFoam) || fail "no mass balance line in log.bondedDemFoam"
 fed=$(echo "$line" | awk '{ print $3 }')
@@ -21,3 +32,29 @@ awk -v i="$imbalance" -v f="$fed" 'BEGIN { exit !(f > 0 && i != "" && (i < 0 ? -
 power=$(awk '$1 == "powerMean_W" { print $2 }' postProcessing/crusherPost/summary.dat)
 awk -v p="$power" 'BEGIN { exit !(p > 0) }' || fail "mean power $power W is not positive"
 echo "ok: CH660 tiny, fed $fed kg, imbalance $imbalance kg, power $power W"
+
+# The spin's columns, by name: it turned, and drive work = wall work + spin energy + bearing loss.
+awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) { n = $i; sub(/ \[.*/, "", n); sub(/^# /, "", n); c[n] = i }; next }
+    !/^#/ && NF > 1 { rate = $c["spinRate"]; ke = $c["spinEnergy"]; loss = $c["bearingLoss"];
+                      drive = $c["driveWork"]; wall = $c["mantleWork"]; if (rate != 0) moved = 1 }
+    END { printf "spin rate %.4g rad/s, spin energy %.4g J, bearing loss %.4g J; drive work %.6g J = wall %.6g J + %.4g J\n",
+                 rate, ke, loss, drive, wall, drive - wall;
+          if (!moved) { print "FAIL: the mantle never turned"; exit 1 }
+          d = drive - wall - ke - loss; if (d < 0) d = -d;
+          if (d > 1e-9 * (drive < 0 ? -drive : drive) + 1e-15) { print "FAIL: drive work != wall work + spin energy + bearing loss"; exit 1 } }' \
+    postProcessing/machine/0/machine.dat || fail "spin books"
+
+# Bad input: free spin without the bearing drag, or with an inertia in the wrong unit.
+for broken in "remove bearingDamping" "unit"; do
+    rm -rf "$work/bad" && cp -r "$work/tiny" "$work/bad" && rm -rf "$work/bad"/[0-9]* "$work/bad/postProcessing"
+    if [ "$broken" = unit ]; then
+        caseDict -case "$work/bad" constant/loading -entry machine/spinInertia -set "[kg m^2 s^-1] 140" > /dev/null
+        before=$(snapshot "$work/bad")
+        expectUserError "spinInertia" bondedDemFoam -case "$work/bad"
+    else
+        caseDict -case "$work/bad" constant/loading -entry machine/bearingDamping -remove > /dev/null
+        before=$(snapshot "$work/bad")
+        expectUserError "needs spinInertia [kg m^2]" bondedDemFoam -case "$work/bad"
+    fi
+    [ "$before" = "$(snapshot "$work/bad")" ] || fail "a refused run changed the case ($broken)"
+done
