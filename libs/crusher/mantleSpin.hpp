@@ -2,8 +2,9 @@
 // Free spin of the mantle about its own axis (docs/theory-crusher.md, "Free spin").
 //
 // A cone crusher's mantle sits on its eccentric through a bearing: the eccentric forces the
-// gyration, but the mantle is free to turn about its own axis. Unloaded, the bearing drags it
-// round slowly; crushing, the rocks' friction rolls it the other way. For an axisymmetric
+// gyration, but the mantle is free to turn about its own axis, driven by the rocks' friction
+// and held back by the bearing. (A real bearing also drags an idle mantle slowly round with
+// the eccentric; that drag is not modelled: an idle mantle stays at rest.) For an axisymmetric
 // body Euler's equation about the symmetry axis a is exact whatever the gyration does:
 //
 //     I psi'' = tau_a - c psi'

@@ -34,6 +34,9 @@ awk -v p="$power" 'BEGIN { exit !(p > 0) }' || fail "mean power $power W is not 
 echo "ok: CH660 tiny, fed $fed kg, imbalance $imbalance kg, power $power W"
 
 # The spin's columns, by name: it turned, and drive work = wall work + spin energy + bearing loss.
+# The identity holds by construction (driveWork is written as mantleWork + the spin's torque
+# work, which MantleSpin books as spin energy + bearing loss): this checks that the columns are
+# wired and written; the physics of the spin is tests/unit/crusher "[spin]".
 awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) { n = $i; sub(/ \[.*/, "", n); sub(/^# /, "", n); c[n] = i }; next }
     !/^#/ && NF > 1 { rate = $c["spinRate"]; ke = $c["spinEnergy"]; loss = $c["bearingLoss"];
                       drive = $c["driveWork"]; wall = $c["mantleWork"]; if (rate != 0) moved = 1 }
