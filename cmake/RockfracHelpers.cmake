@@ -47,10 +47,12 @@ function(rockfrac_add_application name)
   rockfrac_target_options(${name})
 endfunction()
 
-# rockfrac_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...])
-# A Catch2 (v2) executable whose test cases run as one ctest entry.
+# rockfrac_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...]
+#                        [COST <s in a Release build> <s under the sanitizers>])
+# A Catch2 (v2) executable whose test cases run as one ctest entry. COST: as for
+# rockfrac_add_case_test below.
 function(rockfrac_add_unit_test name)
-  cmake_parse_arguments(A "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(A "" "" "SOURCES;DEPS;LABELS;COST" ${ARGN})
   if(NOT A_LABELS)
     set(A_LABELS unit)
   endif()
@@ -63,12 +65,26 @@ function(rockfrac_add_unit_test name)
   add_test(NAME ${name} COMMAND test_${name})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}"
     ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin;${ROCKFRAC_SANITIZER_ENV}")
+  if(A_COST)
+    list(GET A_COST 0 cost)
+    if(ROCKFRAC_SANITIZE)
+      list(GET A_COST 1 cost)
+    endif()
+    set_tests_properties(${name} PROPERTIES COST ${cost})
+  endif()
 endfunction()
 
-# rockfrac_add_case_test(<name> SCRIPT <file.sh> [LABELS ...] [TIMEOUT s])
+# rockfrac_add_case_test(<name> SCRIPT <file.sh> [LABELS ...] [TIMEOUT s]
+#                        [COST <s at full size> <s at small size>])
 # A shell script run with the built applications first on PATH, in a scratch dir.
+# One OpenMP thread unless the script asks for more: ctest runs as many tests at
+# once as there are cores, and a second thread per test would only oversubscribe
+# them (the tests that compare thread counts set OMP_NUM_THREADS themselves).
+# COST is the test's measured time (a Release build at full size, the ci-sanitize
+# build at the small one): ctest starts the longest tests first, which on a fresh
+# clone, with no timing history yet, it cannot otherwise know.
 function(rockfrac_add_case_test name)
-  cmake_parse_arguments(A "" "SCRIPT;TIMEOUT" "LABELS" ${ARGN})
+  cmake_parse_arguments(A "" "SCRIPT;TIMEOUT" "LABELS;COST" ${ARGN})
   if(NOT A_LABELS)
     set(A_LABELS case)
   endif()
@@ -79,7 +95,14 @@ function(rockfrac_add_case_test name)
   add_test(NAME ${name}
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/${A_SCRIPT} ${work})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}" TIMEOUT ${A_TIMEOUT}
-    ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_BUILD_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_CASE_SIZE=${ROCKFRAC_CASE_SIZE};${ROCKFRAC_SANITIZER_ENV}")
+    ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_BUILD_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=1;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_CASE_SIZE=${ROCKFRAC_CASE_SIZE};${ROCKFRAC_SANITIZER_ENV}")
+  if(A_COST)
+    list(GET A_COST 0 cost)
+    if(ROCKFRAC_CASE_SIZE STREQUAL "small")
+      list(GET A_COST 1 cost)
+    endif()
+    set_tests_properties(${name} PROPERTIES COST ${cost})
+  endif()
 endfunction()
 
 # Add every immediate or nested subdirectory of <dir> that has a CMakeLists.txt,

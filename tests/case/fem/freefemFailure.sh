@@ -20,7 +20,7 @@ command -v FreeFem++ > /dev/null || fail "FreeFem++ not found (Debian package fr
 for seed in $(seq 1 "$seeds"); do
     out="$work/freefem/seed$seed"
     mkdir -p "$out"
-    FreeFem++ -nw "$src/tutorials/FreeFEM/BDT-KSTDFH.edp" -seed "$seed" -t "$thickness" -h "$h2" \
+    OMP_NUM_THREADS=1 FreeFem++ -nw "$src/tutorials/FreeFEM/BDT-KSTDFH.edp" -seed "$seed" -t "$thickness" -h "$h2" \
         -vref "$vref" -maxForce 8000 -steps 100 -out "$out" > "$out/log.FreeFem++" 2>&1 ||
         fail "FreeFem++ seed $seed: $(tail -3 "$out/log.FreeFem++")"
     awk -F'\t' '!/^#/ { print $2 }' "$out/postProcessing/failureLoad/0/failureLoad.dat" >> "$work/freefem.txt"

@@ -9,7 +9,7 @@ h2="${3:-$(bySize 0.5e-3 1.0e-3)}"
 thickness=4.48e-3
 command -v FreeFem++ > /dev/null || fail "FreeFem++ not found (Debian package freefem++)"
 mkdir -p "$work/freefem"
-FreeFem++ -nw "$src/tutorials/FreeFEM/BDT-KSTDFH.edp" -elastic 1 -t "$thickness" -h "$h2" -maxForce 4000 \
+OMP_NUM_THREADS=1 FreeFem++ -nw "$src/tutorials/FreeFEM/BDT-KSTDFH.edp" -elastic 1 -t "$thickness" -h "$h2" -maxForce 4000 \
     -steps 4 -out "$work/freefem" > "$work/freefem/log.FreeFem++" 2>&1 || fail "FreeFem++: $(tail -3 "$work/freefem/log.FreeFem++")"
 slope2=$(awk -F'\t' '!/^#/ { s = $2 / -$4 } END { printf "%.8g", s }' "$work/freefem/postProcessing/plateForce/0/plateForce.dat")
 
