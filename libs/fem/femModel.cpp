@@ -22,6 +22,8 @@ FemModel::FemModel(const TetMesh& mesh, const FemParameters& parameters)
         throw UserError("FEM: timeStepSafety must lie in (0, 1]");
     if (!(parameters.massDamping >= 0.0)) throw UserError("FEM: massDamping must be >= 0");
     if (!(parameters.contactPenaltyScale > 0.0)) throw UserError("FEM: contactPenaltyScale must be > 0");
+    if (!(parameters.contactCrushingPressure >= 0.0))
+        throw UserError("FEM: the contact crushing pressure must be >= 0 (0 = off)");
     material_->initialise(geometry_);
     const std::size_t n = mesh.numNodes();
     elementForces_.assign(12 * geometry_.numElements(), 0.0);
@@ -36,6 +38,21 @@ FemModel::FemModel(const TetMesh& mesh, const FemParameters& parameters)
     computeMasses();
     contactNodes_ = boundaryNodes(mesh);
     computeContactStiffness();
+    computeContactAreas();
+}
+
+// A third of each boundary face's area to each of its nodes: the area over which a
+// contact node's force is spread, for the crushing pressure limit.
+void FemModel::computeContactAreas()
+{
+    std::vector<double> nodeArea(mesh_.numNodes(), 0.0);
+    for (const auto& f : boundaryFaces(mesh_)) {
+        const Vec3 &a = mesh_.nodes[f[0]], &b = mesh_.nodes[f[1]], &c = mesh_.nodes[f[2]];
+        const double third = norm(cross(b - a, c - a)) / 6.0;
+        for (int n : f) nodeArea[n] += third;
+    }
+    contactArea_.resize(contactNodes_.size());
+    for (std::size_t j = 0; j < contactNodes_.size(); ++j) contactArea_[j] = nodeArea[contactNodes_[j]];
 }
 
 // Node -> (element, local node) lists in increasing element order: the fixed
@@ -124,6 +141,7 @@ int FemModel::addPlate(const RigidPlate& plate)
     if (!(p.friction >= 0.0)) throw UserError("plate '" + p.name + "': friction must be >= 0");
     p.normal = normalised(p.normal);
     p.tangentialForces.assign(3 * contactNodes_.size(), 0.0);
+    p.crushedDepth.assign(contactNodes_.size(), 0.0);
     state_.plates.push_back(std::move(p));
     forcesCurrent_ = false;
     return numPlates() - 1;
@@ -193,6 +211,12 @@ void FemModel::gatherInternalForces()
 // force is an elastic stick spring (stiffness ratio * k) updated with the relative
 // tangential motion of the step and capped at mu * normal force (slip). Serial over
 // the contact candidates so the plate forces are summed in a fixed order.
+// Contact crushing (when the pressure p_c > 0): a node's normal force is at most
+// p_c A_node. A penetration beyond p_c A_node / k is crushed rock, not elastic
+// overlap: it is added to the node's crushed depth c (which never shrinks), and the
+// node's contact surface lies c behind the plate from then on, F_n = k (delta - c).
+// Unloading is elastic; the work of the capped force over the crushed depth is
+// dissipated in the crushed layer, outside the rock's own energy balance.
 void FemModel::addContactForces(const std::vector<double>& displacementIncrement, double dt)
 {
     for (auto& plate : state_.plates) {
@@ -202,13 +226,19 @@ void FemModel::addContactForces(const std::vector<double>& displacementIncrement
         for (std::size_t j = 0; j < contactNodes_.size(); ++j) {
             const int node = contactNodes_[j];
             double* tangential = &plate.tangentialForces[3 * j];
-            const double gap = dot(nodePosition(node) - planePoint, plate.normal);
-            if (gap >= 0.0) {
+            const double stiffness = contactStiffness_[j];
+            double& crushed = plate.crushedDepth[j];
+            double overlap = -dot(nodePosition(node) - planePoint, plate.normal) - crushed;
+            const double crushingForce = parameters_.contactCrushingPressure * contactArea_[j];
+            if (crushingForce > 0.0 && stiffness * overlap > crushingForce) {
+                crushed += overlap - crushingForce / stiffness;
+                overlap = crushingForce / stiffness;
+            }
+            if (overlap <= 0.0) {
                 tangential[0] = tangential[1] = tangential[2] = 0.0;
                 continue;
             }
-            const double stiffness = contactStiffness_[j];
-            const double normalForce = -stiffness * gap;
+            const double normalForce = stiffness * overlap;
             const Vec3 nodeStep{displacementIncrement[3 * node], displacementIncrement[3 * node + 1],
                                 displacementIncrement[3 * node + 2]};
             Vec3 slip = nodeStep - plateStep;
@@ -365,8 +395,8 @@ void FemModel::checkStateSizes(const FemState& s) const
         throw UserError("FEM restart: element stresses do not match the mesh");
     if (s.plates.size() != state_.plates.size()) throw UserError("FEM restart: the number of plates differs");
     for (const auto& p : s.plates)
-        if (p.tangentialForces.size() != 3 * contactNodes_.size())
-            throw UserError("FEM restart: plate '" + p.name + "' friction history does not match the mesh");
+        if (p.tangentialForces.size() != 3 * contactNodes_.size() || p.crushedDepth.size() != contactNodes_.size())
+            throw UserError("FEM restart: plate '" + p.name + "' contact history does not match the mesh");
 }
 
 void FemModel::setState(const FemState& state)

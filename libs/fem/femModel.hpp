@@ -35,6 +35,11 @@ struct FemParameters {
     double contactPenaltyScale = 1.0;
     // Tangential (stick) penalty as a fraction of the normal penalty.
     double tangentialPenaltyRatio = 1.0;
+    // Contact crushing (Pa); 0 = off, the paper's model. The plate pressure on a contact
+    // node may not exceed this value over the node's share of the boundary area: beyond
+    // it the rock under the plate crushes, the node's crushed depth grows (irreversibly)
+    // and the contact spreads to the neighbouring nodes instead of concentrating.
+    double contactCrushingPressure = 0.0;
 };
 
 // A rigid plane. The rock lies on the side the normal points to; nodes behind the
@@ -49,6 +54,9 @@ struct RigidPlate {
     Vec3 force;                  // force of the rock on the plate (N), at the current time
     // Stick-slip history: tangential force on each contact candidate node (3 per node).
     std::vector<double> tangentialForces;
+    // Contact crushing history: depth of rock crushed away under this plate at each
+    // contact candidate node (m, >= 0; zero while crushing is off).
+    std::vector<double> crushedDepth;
 };
 
 // Energy bookkeeping (J). Balance: kinetic + internalWork + dampingWork = externalWork.
@@ -136,11 +144,14 @@ public:
     const ElementGeometry& geometry() const { return geometry_; }
     const std::vector<double>& nodalMasses() const { return nodalMass_; }
     const std::vector<int>& contactNodes() const { return contactNodes_; }
+    // Each contact node's share of the boundary area (a third of each boundary face), m^2.
+    const std::vector<double>& contactAreas() const { return contactArea_; }
 
 private:
     void buildNodeElementLists();
     void computeMasses();
     void computeContactStiffness();
+    void computeContactAreas();
     double elementFrequencySquared(std::size_t element, double density) const;
     double contactStepFactor() const;
     // Forces at the current displacements; returns the first bad element or -1.
@@ -163,6 +174,7 @@ private:
     double addedMassFraction_ = 0.0;
     std::vector<int> contactNodes_;           // boundary nodes (contact candidates)
     std::vector<double> contactStiffness_;    // normal penalty per contact node
+    std::vector<double> contactArea_;         // boundary area per contact node (crushing)
     std::vector<unsigned char> constrained_;  // bit k: component k prescribed
     std::vector<double> prescribedVelocity_;  // 3 per node
     std::vector<double> appliedForces_;       // 3 per node, empty = none

@@ -93,7 +93,7 @@ void checkTetQuality(const TetMesh& mesh)
     }
 }
 
-std::vector<int> boundaryNodes(const TetMesh& mesh)
+std::vector<std::array<int, 3>> boundaryFaces(const TetMesh& mesh)
 {
     // Count each face by its sorted node triple; boundary faces occur once.
     std::map<std::array<int, 3>, int> faceCount;
@@ -104,10 +104,17 @@ std::vector<int> boundaryNodes(const TetMesh& mesh)
             std::sort(face.begin(), face.end());
             ++faceCount[face];
         }
-    std::vector<char> onBoundary(mesh.numNodes(), 0);
+    std::vector<std::array<int, 3>> faces;
     for (const auto& [face, count] : faceCount)
-        if (count == 1)
-            for (int n : face) onBoundary[n] = 1;
+        if (count == 1) faces.push_back(face);
+    return faces;
+}
+
+std::vector<int> boundaryNodes(const TetMesh& mesh)
+{
+    std::vector<char> onBoundary(mesh.numNodes(), 0);
+    for (const auto& face : boundaryFaces(mesh))
+        for (int n : face) onBoundary[n] = 1;
     std::vector<int> nodes;
     for (std::size_t n = 0; n < onBoundary.size(); ++n)
         if (onBoundary[n]) nodes.push_back(static_cast<int>(n));

@@ -54,5 +54,7 @@ TetMesh tetMeshFromGmshModel();
 
 // Nodes on the boundary: the nodes of faces that belong to exactly one tet.
 std::vector<int> boundaryNodes(const TetMesh& mesh);
+// Faces on the boundary (node triples, sorted), in a fixed order.
+std::vector<std::array<int, 3>> boundaryFaces(const TetMesh& mesh);
 
 }  // namespace rockfrac::fem

@@ -93,6 +93,8 @@ FemLoading readFemLoading(const Dictionary& d)
         l.startGap = p.getScalarOrDefault("startGap", 0.0, Bounds::nonNegative(), &length);
         l.contactPenaltyScale = p.getScalarOrDefault("contactPenaltyScale", 1.0, Bounds::positive());
         l.tangentialPenaltyRatio = p.getScalarOrDefault("tangentialPenaltyRatio", 1.0, Bounds::nonNegative());
+        static const Dimensions pascal = Dimensions::fromUnits("Pa");
+        l.contactCrushingPressure = p.getScalarOrDefault("crushingPressure", 0.0, Bounds::nonNegative(), &pascal);
         if (!(l.approachSpeed() > 0))
             throw UserError(
                 d.fileName() +
@@ -216,6 +218,7 @@ void writeFemState(const fs::path& file, FemModel& model, const FemRunState& run
               std::vector<double>{p.velocity.x, p.velocity.y, p.velocity.z, p.displacement.x,
                                   p.displacement.y, p.displacement.z, p.force.x, p.force.y, p.force.z});
         f.put(name + "tangentialForces", p.tangentialForces);
+        f.put(name + "crushedDepth", p.crushedDepth);
     }
     for (const StateField& field : model.material().stateFields())
         f.put("material." + field.name, *field.values);
@@ -254,6 +257,9 @@ FemRunState readFemState(const fs::path& file, FemModel& model)
         p.force = {m[6], m[7], m[8]};
         p.tangentialForces =
             f.doubles(name + "tangentialForces", static_cast<long>(p.tangentialForces.size()));
+        // States written before contact crushing existed have no crushed depths: none.
+        if (f.has(name + "crushedDepth"))
+            p.crushedDepth = f.doubles(name + "crushedDepth", static_cast<long>(p.crushedDepth.size()));
     }
     model.setState(s);
     for (const StateField& field : model.material().stateFields())

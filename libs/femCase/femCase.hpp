@@ -45,6 +45,7 @@ struct FemLoading {
     double startGap = 0.0;  // upper plate to specimen at the start [m]; the lower plate touches
     double contactPenaltyScale = 1.0;
     double tangentialPenaltyRatio = 1.0;
+    double contactCrushingPressure = 0.0;  // plates/crushingPressure [Pa], 0 = off
     ArcLoadSpec arc;
     Vec3 gravity;                            // [m/s^2]
     double settlingTime = 0.0;               // plates at rest (arc load zero), gravity on, before loading [s]

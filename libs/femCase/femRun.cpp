@@ -119,6 +119,7 @@ struct FeFractureRun::Impl {
             controlDict.getScalarOrDefault("massDamping", 0.0, Bounds::nonNegative(), &perSecond);
         parameters.gravity = loading.gravity;
         parameters.contactPenaltyScale = loading.contactPenaltyScale;
+        parameters.contactCrushingPressure = loading.contactCrushingPressure;
         parameters.tangentialPenaltyRatio = loading.tangentialPenaltyRatio;
     }
 
@@ -457,6 +458,26 @@ struct FeFractureRun::Impl {
             1e3 * height / 8);
     }
 
+    // Contact crushing: per plate, the nodes crushed, the largest crushed depth and the
+    // crushed area (the nodes' contact areas), i.e. how far the contacts have flattened.
+    void reportContactCrushing() const
+    {
+        if (!(loading.contactCrushingPressure > 0)) return;
+        for (int k = 0; k < model->numPlates(); ++k) {
+            const RigidPlate& p = model->plate(k);
+            int nodes = 0;
+            double deepest = 0, area = 0;
+            for (std::size_t j = 0; j < p.crushedDepth.size(); ++j)
+                if (p.crushedDepth[j] > 0) {
+                    ++nodes;
+                    deepest = std::max(deepest, p.crushedDepth[j]);
+                    area += model->contactAreas()[j];
+                }
+            std::printf("Contact crushing under plate %s: %d nodes, %.4g mm^2, deepest %.4g mm\n", p.name.c_str(),
+                        nodes, 1e6 * area, 1e3 * deepest);
+        }
+    }
+
     double totalVolume() const
     {
         double v = 0;
@@ -568,7 +589,10 @@ void FeFractureRun::printSetup() const
             r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
             r.loading.upper.friction, r.loading.lower.friction, 1e3 * r.loading.startGap,
             r.loading.settlingTime, r.loading.gravity.x, r.loading.gravity.y, r.loading.gravity.z);
-    else
+    if (r.loading.kind == FemLoading::Kind::plates && r.loading.contactCrushingPressure > 0)
+        std::printf("Contact crushing: plate pressure on a contact node at most %.4g MPa (plates/crushingPressure)\n",
+                    1e-6 * r.loading.contactCrushingPressure);
+    if (r.loading.kind == FemLoading::Kind::arcLoad)
         std::printf(
             "Arc load: 2 x %.4g deg arcs, pressure rate %.4g Pa/s, resultant %.5g N per Pa of pressure\n",
             2 * r.loading.arc.halfAngle * 180 / M_PI, r.loading.arc.pressureRate, r.arcTopForcePerPascal);
@@ -658,6 +682,7 @@ int FeFractureRun::execute()
         e.externalWork, e.internalWork, e.dampingWork, r.model->kineticEnergy(), r.model->strainEnergy());
     r.reportQuasiStatic(plateForce.path());
     r.reportCrackLocation();
+    r.reportContactCrushing();
     if (exitCode == exitSuccess) r.writeFailureLoad();
     return exitCode;
 }

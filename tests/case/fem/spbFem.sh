@@ -9,12 +9,14 @@
 # is listed with failureLoad 0 and fails the test.
 # Usage: spbFem.sh <scratch> [granite|limestone] [element size, default the tutorial's]
 #        [plate speed m/s, default the tutorial's] [rocks, default all: "rock1 rock3"]
-#        [massScalingTimeStep s, default the tutorial's].
+#        [massScalingTimeStep s, default the tutorial's]
+#        [plates/crushingPressure Pa, default the tutorial's; 0 = off].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
 speed="${4:-}"
 massStep="${6:-}"
+crushing="${7:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
@@ -31,6 +33,10 @@ for rock in $rocks; do
     done
     [ -z "$h" ] || caseDict -case "$c" system/feMeshDict -entry elementSize -set "$h" > /dev/null
     [ -z "$speed" ] || caseDict -case "$c" constant/loading -entry plates/upper/velocity -set "(0 0 -$speed)" > /dev/null
+    if [ -n "$crushing" ]; then
+        verb=-add; grep -q "crushingPressure" "$c/constant/loading" && verb=-set
+        caseDict -case "$c" constant/loading -entry plates/crushingPressure $verb "[Pa] $crushing" > /dev/null
+    fi
     [ -z "$massStep" ] || caseDict -case "$c" system/controlDict -entry massScalingTimeStep -set "$massStep" > /dev/null
     caseDict -case "$c" system/controlDict -entry writeInterval -set 1 > /dev/null  # VTK at the end only
     (cd "$c" && meshRock > log.meshRock 2>&1) || fail "meshRock $rock: $(tail -3 "$c/log.meshRock")"

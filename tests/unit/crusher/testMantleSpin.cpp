@@ -12,14 +12,14 @@ using namespace rockfrac;
 
 namespace {
 
-const double pi = 3.14159265358979323846;
+const double spinPi = 3.14159265358979323846;
 
 CrusherKinematics ch660Like()
 {
     CrusherKinematics k;
     k.pivot = {0, 0, 1.5};
     k.eccentric_angle = 0.0085;
-    k.eccentric_speed = 2 * pi * 290 / 60;
+    k.eccentric_speed = 2 * spinPi * 290 / 60;
     k.phase = 0.3;
     return k;
 }

@@ -19,10 +19,10 @@ using namespace rockfrac;
 
 namespace {
 
-constexpr double cell_size = 5e-3;
-constexpr double dilation = 5e-4;
+constexpr double contact_cell_size = 5e-3;
+constexpr double contact_dilation = 5e-4;
 
-DemParameters quietParameters()
+DemParameters quietContactParameters()
 {
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
@@ -51,7 +51,7 @@ void placeOnFloor(DemModel& model, double overlap, const Vec3& velocity = {})
 {
     const Quat tilt = quatFromRotationVector({0.3, 0.2, 0.1}) * model.cells().orientation[0];
     Vec3 position{0.001, 0.002, 0.0};
-    position.z = dilation - overlap - lowestCoreZ(model, 0, position, tilt);
+    position.z = contact_dilation - overlap - lowestCoreZ(model, 0, position, tilt);
     model.setCellPose(0, position, tilt);
     model.setCellVelocity(0, velocity, {});
 }
@@ -61,15 +61,15 @@ void placeOnFloor(DemModel& model, double overlap, const Vec3& velocity = {})
 TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touch at zero overlap",
           "[dem][core]")
 {
-    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation),
-                   quietParameters());
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation),
+                   quietContactParameters());
     const CellArrays& cells = model.cells();
     CHECK(model.counters().shrunk_cores == 0);
     REQUIRE(cells.core_vertex_offset[1] == 8);
     for (int v = 0; v < 8; ++v) {
         const Vec3 corner = cells.core_vertices[v];
         for (int d = 0; d < 3; ++d)
-            CHECK(std::fabs(corner[d]) == Approx(0.5 * cell_size - dilation).epsilon(1e-12));
+            CHECK(std::fabs(corner[d]) == Approx(0.5 * contact_cell_size - contact_dilation).epsilon(1e-12));
     }
     ConvexVertexSet a, b;
     a.vertices = cells.core_vertices.data();
@@ -79,29 +79,29 @@ TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touc
     b.position = cells.position[1];
     a.rotation = rotationMatrix(cells.orientation[0]);
     b.rotation = rotationMatrix(cells.orientation[1]);
-    CHECK(gjkDistance(a, b, a.position - b.position).distance == Approx(2.0 * dilation).epsilon(1e-12));
+    CHECK(gjkDistance(a, b, a.position - b.position).distance == Approx(2.0 * contact_dilation).epsilon(1e-12));
 }
 
 TEST_CASE("a thin cell whose erosion vanishes falls back to a shrunk core and is counted", "[dem][core]")
 {
-    DemParameters p = quietParameters();
-    p.dilation_radius = 0.6 * cell_size;  // larger than half the cell: erosion empties it
-    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    DemParameters p = quietContactParameters();
+    p.dilation_radius = 0.6 * contact_cell_size;  // larger than half the cell: erosion empties it
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
     CHECK(model.counters().shrunk_cores == 1);
     CHECK(model.cells().core_vertex_offset[1] == 8);
 }
 
 TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem][contact][wall]")
 {
-    const DemParameters p = quietParameters();
-    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    const DemParameters p = quietContactParameters();
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
                                            p.steel_youngs_modulus, p.steel_poisson_ratio);
     for (double overlap : {1e-8, 1e-7, 1e-6, 1e-5, 5e-5}) {
         placeOnFloor(model, overlap);
         test::evaluateForces(model, 0.0);
-        const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
+        const double hertz = 4.0 / 3.0 * E_star * std::sqrt(contact_dilation) * std::pow(overlap, 1.5);
         INFO("overlap = " << overlap);
         CHECK(model.cells().force[0].z == Approx(hertz).epsilon(0.02));
         CHECK(model.wallReaction(0).z == Approx(-hertz).epsilon(0.02));
@@ -114,8 +114,8 @@ TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem]
 TEST_CASE("two cells touching after their bonds broke: Hertz between the cores with R* = r_d/2",
           "[dem][contact]")
 {
-    const DemParameters p = quietParameters();
-    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), p);
+    const DemParameters p = quietContactParameters();
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation), p);
     const Vec3 rest = model.cells().position[1];
     const Quat q = model.cells().orientation[1];
     const double overlap = 2e-6;
@@ -133,7 +133,7 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
     test::evaluateForces(model, 0.0);
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
                                            p.rock_poisson_ratio);
-    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * dilation) * std::pow(overlap, 1.5);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(overlap, 1.5);
     CHECK(model.counters().contacts_active == 1);
     CHECK(model.counters().interfaces_open == 1);
     CHECK(model.cells().force[1].x == Approx(hertz).epsilon(1e-9));
@@ -143,8 +143,8 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
 
 TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[dem][wall]")
 {
-    const DemParameters p = quietParameters();
-    const VoronoiMesh mesh = test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false);
+    const DemParameters p = quietContactParameters();
+    const VoronoiMesh mesh = test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false);
     DemModel analytic(mesh, p), triangulated(mesh, p);
     analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     const double half = 0.05;
@@ -301,8 +301,8 @@ namespace {
 // faces parallel to them, each of the eight core corners overlapping by `overlap`.
 DemModel boxBetweenPlates(const DemParameters& p, double overlap)
 {
-    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
-    const double half = 0.5 * cell_size;  // core half size + r_d
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    const double half = 0.5 * contact_cell_size;  // core half size + r_d
     const Vec3 centre = model.cells().position[0];
     model.addPlate(centre - Vec3{0.0, 0.0, half - overlap}, {0.0, 0.0, 1.0});
     model.addPlate(centre + Vec3{0.0, 0.0, half - overlap}, {0.0, 0.0, -1.0});
@@ -314,17 +314,17 @@ DemModel boxBetweenPlates(const DemParameters& p, double overlap)
 TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz contact",
           "[dem][contact][wall]")
 {
-    const DemParameters p = quietParameters();
+    const DemParameters p = quietContactParameters();
     const double overlap = 2e-6;
     DemModel model = boxBetweenPlates(p, overlap);
     test::evaluateForces(model, 0.0);
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
                                            p.steel_youngs_modulus, p.steel_poisson_ratio);
-    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(dilation) * std::pow(overlap, 1.5);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(contact_dilation) * std::pow(overlap, 1.5);
     // Four corners per face: the lower plate pushes up with 4 Hertz forces, no torque.
     CHECK(model.wallReaction(0).z == Approx(-4.0 * hertz).epsilon(1e-9));
     CHECK(model.wallReaction(1).z == Approx(4.0 * hertz).epsilon(1e-9));
-    CHECK(norm(model.cells().torque[0]) < 1e-9 * hertz * cell_size);
+    CHECK(norm(model.cells().torque[0]) < 1e-9 * hertz * contact_cell_size);
 
     // Rocked by a tiny angle, the force and torque change continuously (no jump to a
     // single corner): the torque is the sum of the corner forces' moments.
@@ -339,7 +339,7 @@ TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz c
         CHECK(model.wallReaction(0).z == Approx(-4.0 * hertz).epsilon(1e-3));
         // Restoring and linear in the angle for small angles: |T| / angle is bounded.
         CHECK(torque < 0.0);
-        CHECK(std::fabs(torque) / angle < 1e3 * hertz * cell_size / overlap);
+        CHECK(std::fabs(torque) / angle < 1e3 * hertz * contact_cell_size / overlap);
         CHECK(std::fabs(torque) > previous_torque);
         previous_torque = std::fabs(torque);
     }
@@ -348,7 +348,7 @@ TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz c
 TEST_CASE("a cell rocking between two plates with e = 1, no friction, conserves energy",
           "[dem][contact][wall][energy]")
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 1.0;  // no contact damping
     p.rock_steel_friction = 0.0;
     DemModel model = boxBetweenPlates(p, 5e-6);
@@ -380,7 +380,7 @@ TEST_CASE("a cell rattling between two plates with e = 0.3 books what it loses",
     // left is first order in dt (0.77 % at 1e-7 s, 0.39 % at 5e-8 s). With friction
     // (mu = 0.5) about 1 % more is not booked, whatever the step: the incremental Mindlin
     // spring keeps its force while its stiffness follows the overlap (docs/theory-dem.md §9).
-    DemParameters p = quietParameters();
+    DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 0.3;
     p.rock_steel_friction = 0.0;
     DemModel model = boxBetweenPlates(p, -10e-6);  // 10 um of play on either side
@@ -412,11 +412,11 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     const TriSurface floor =
         readStl(std::string(ROCKFRAC_SOURCE_DIR) + "/tests/unit/dem/data/floorPlate.stl");
     REQUIRE(floor.triangles.size() == 32);
-    DemParameters p = quietParameters();
+    DemParameters p = quietContactParameters();
     p.bond_tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
     p.bond_cohesion = 3e5;
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.05;  // brittle: d_f of a few um
-    const VoronoiMesh mesh = test::boxBlockMesh(2, 2, 2, {cell_size, cell_size, cell_size}, dilation);
+    const VoronoiMesh mesh = test::boxBlockMesh(2, 2, 2, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation);
     DemModel analytic(mesh, p), fromStl(mesh, p);
     double zMin = 1e300, zMax = -1e300;
     for (const auto& v : mesh.vertices) zMin = std::min(zMin, v.z), zMax = std::max(zMax, v.z);
@@ -460,22 +460,22 @@ namespace {
 // is then 37 um deep in the ridge's reach).
 double ridgeRockingError(double ridge_degrees, double tilt_degrees, int& intersections, double dt = 1e-7)
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 1.0;
     p.rock_steel_friction = 0.0;
-    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
     const Vec3 centre = model.cells().position[0];
     const double degree = 3.14159265358979 / 180.0;
     const double L = 0.02, slope = std::tan(ridge_degrees * degree);
-    const double zr = centre.z - 0.5 * cell_size + 2e-6;  // ridge 2 um into the cell's bottom face
+    const double zr = centre.z - 0.5 * contact_cell_size + 2e-6;  // ridge 2 um into the cell's bottom face
     const double x0 = centre.x + 1e-3;                    // ridge 1 mm beside the centre
     const double zl = zr - L * slope;
     const double tilt = std::tan(tilt_degrees * degree);
     std::vector<Vec3> roof{{x0 - L, -L, zl}, {x0, -L, zr},     {x0, L, zr},
                            {x0 - L, L, zl},  {x0 + L, -L, zl}, {x0 + L, L, zl}};
-    for (Vec3& v : roof) v.z += tilt * (v.y - 0.5 * cell_size);
+    for (Vec3& v : roof) v.z += tilt * (v.y - 0.5 * contact_cell_size);
     model.addTriSurface(roof, {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}});
-    model.addPlate(centre + Vec3{0.0, 0.0, 0.5 * cell_size + 2e-6}, {0.0, 0.0, -1.0});
+    model.addPlate(centre + Vec3{0.0, 0.0, 0.5 * contact_cell_size + 2e-6}, {0.0, 0.0, -1.0});
     model.setCellVelocity(0, {0.05, 0.0, 0.0}, {0.0, 30.0, 0.0});
     test::evaluateForces(model, 0.0);
     // The scale: the mechanical energy at the start (kinetic and stored in the contacts).
@@ -610,10 +610,10 @@ TEST_CASE(
     // rotations of the cell by +-h change the stored energy by -F.dx and -T.dphi (central
     // differences). Rotations about z bring core edges to within 10-20 degrees of the
     // ridge, where a pair's reach depends on its angle and acts with a torque of its own.
-    DemParameters p = quietParameters();
+    DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 1.0;
     p.rock_steel_friction = 0.0;
-    DemModel model(test::boxBlockMesh(1, 1, 1, {cell_size, cell_size, cell_size}, dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
     const Vec3 centre = model.cells().position[0];
     const double L = 0.02, slope = std::tan(10.0 * 3.14159265358979 / 180.0);
     std::vector<Vec3> roof{{-L, -L, -L * slope}, {0, -L, 0},          {0, L, 0},
@@ -631,7 +631,7 @@ TEST_CASE(
         for (int v = 0; v < 8; ++v)
             lowest = std::min(lowest, (rotationMatrix(q) * model.cells().core_vertices[v]).z);
         const Vec3 x{1.5e-3 * uniform(random), 0.0,
-                     -lowest + dilation * (0.1 + 0.8 * (0.5 + 0.5 * uniform(random)))};
+                     -lowest + contact_dilation * (0.1 + 0.8 * (0.5 + 0.5 * uniform(random)))};
         auto energyAt = [&](const Vec3& shift, const Vec3& turn) {
             model.setCellPose(0, x + shift, quatFromRotationVector(turn) * q);
             test::evaluateForces(model, 0.0);
@@ -650,7 +650,7 @@ TEST_CASE(
             INFO("sample " << sample << " direction " << d << " U " << U << ": force " << force[d] << " vs "
                            << f << ", torque " << torque[d] << " vs " << t);
             CHECK(force[d] == Approx(f).margin(1e-4 * norm(force)));
-            CHECK(torque[d] == Approx(t).margin(1e-4 * norm(force) * cell_size));
+            CHECK(torque[d] == Approx(t).margin(1e-4 * norm(force) * contact_cell_size));
         }
     }
     (void)centre;

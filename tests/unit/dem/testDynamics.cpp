@@ -16,10 +16,10 @@ using namespace rockfrac;
 
 namespace {
 
-constexpr double cell_size = 5e-3;
-constexpr double dilation = 5e-4;
+constexpr double dynamics_cell_size = 5e-3;
+constexpr double dynamics_dilation = 5e-4;
 
-DemParameters quietParameters()
+DemParameters quietDynamicsParameters()
 {
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
@@ -42,7 +42,7 @@ void shake(DemModel& model, double speed, double spin, unsigned seed)
 
 TEST_CASE("a torque-free spinning cell with asymmetric inertia keeps its angular momentum", "[dem][dynamics]")
 {
-    const DemParameters p = quietParameters();
+    const DemParameters p = quietDynamicsParameters();
     DemModel model(test::boxBlockMesh(1, 1, 1, {1e-3, 2e-3, 3e-3}, 1e-4, false), p);
     // Spin mostly about the intermediate axis (unstable): the body tumbles, L must not move.
     model.setCellVelocity(0, {}, {0.3, 10.0, 0.2});
@@ -66,9 +66,9 @@ TEST_CASE("a torque-free spinning cell with asymmetric inertia keeps its angular
 
 TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][dynamics][energy]")
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;  // no breakage
-    DemModel model(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
+    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
     REQUIRE(model.cells().size() == 100);
     shake(model, 0.05, 20.0, 7);
     test::evaluateForces(model, 0.0);
@@ -103,8 +103,8 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    DemModel model(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation, true,
-                                      {0.0, 0.0, 0.2 * dilation}),
+    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
+                                      {0.0, 0.0, 0.2 * dynamics_dilation}),
                    p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     shake(model, 0.5, 50.0, 11);
@@ -141,9 +141,9 @@ TEST_CASE("gather determinism: 1 and 2 OpenMP threads give bitwise identical pos
 
 TEST_CASE("a time step far too large is reported, naming the step and the cause", "[dem][safety]")
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
-    DemModel model(test::boxBlockMesh(3, 3, 3, {cell_size, cell_size, cell_size}, dilation), p);
+    DemModel model(test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
     shake(model, 0.05, 0.0, 3);
     const double dt = 2.0 * model.rayleighTimeStep();
     long failed_at = -1;
@@ -159,11 +159,11 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
 // Not a test: the speed of an intact bonded block (run with: test_dem "[.benchmark]").
 TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]")
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
     const int side = 20;
     DemModel model(
-        test::boxBlockMesh(side, side, side, {cell_size, cell_size, cell_size}, dilation, true, {}, {3, 4}),
+        test::boxBlockMesh(side, side, side, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true, {}, {3, 4}),
         p);
     shake(model, 0.01, 2.0, 5);
     const double dt = 0.02 * model.rayleighTimeStep();
@@ -187,8 +187,8 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    const VoronoiMesh mesh = test::boxBlockMesh(4, 4, 3, {cell_size, cell_size, cell_size}, dilation, true,
-                                                {0.0, 0.0, 0.2 * dilation});
+    const VoronoiMesh mesh = test::boxBlockMesh(4, 4, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
+                                                {0.0, 0.0, 0.2 * dynamics_dilation});
     DemModel original(mesh, p);
     original.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 0.01});
     shake(original, 0.5, 50.0, 13);
@@ -231,13 +231,13 @@ TEST_CASE("a wall velocity set to its value keeps the forces; a new value re-eva
     DemParameters p;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 3, {cell_size, cell_size, cell_size}, dilation, true,
-                                                {0.0, 0.0, 0.2 * dilation});
+    const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
+                                                {0.0, 0.0, 0.2 * dynamics_dilation});
     const Vec3 push{0.0, 0.0, -0.5};
     auto make = [&] {
         DemModel model(mesh, p);
         model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
-        model.addPlate({0.0, 0.0, 3.0 * cell_size + 0.2 * dilation - 1e-6}, {0.0, 0.0, -1.0},
+        model.addPlate({0.0, 0.0, 3.0 * dynamics_cell_size + 0.2 * dynamics_dilation - 1e-6}, {0.0, 0.0, -1.0},
                        push);  // 1 um in
         shake(model, 0.05, 5.0, 17);
         return model;
@@ -274,14 +274,14 @@ TEST_CASE("a wall velocity set to its value keeps the forces; a new value re-eva
 
 TEST_CASE("critical time step: two bonded cells against the analytic omega = sqrt(2K/m)", "[dem][timestep]")
 {
-    DemParameters p = quietParameters();
+    DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
-    DemModel model(test::boxBlockMesh(2, 1, 1, {cell_size, cell_size, cell_size}, dilation), p);
+    DemModel model(test::boxBlockMesh(2, 1, 1, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
     const double k_n = p.bond_youngs_modulus * (1.0 - p.bond_poisson_ratio) /
                        ((1.0 + p.bond_poisson_ratio) * (1.0 - 2.0 * p.bond_poisson_ratio));
-    // Four corner bonds of A/4 each over l_ij = cell_size: K = k_n A / l in parallel.
-    const double K = k_n * cell_size * cell_size / cell_size;
-    const double m = p.rock_density * cell_size * cell_size * cell_size;
+    // Four corner bonds of A/4 each over l_ij = dynamics_cell_size: K = k_n A / l in parallel.
+    const double K = k_n * dynamics_cell_size * dynamics_cell_size / dynamics_cell_size;
+    const double m = p.rock_density * dynamics_cell_size * dynamics_cell_size * dynamics_cell_size;
     const double axial = std::sqrt(2.0 * K / m);
     const CriticalTimeStep critical = model.criticalTimeStep();
     INFO("omega " << critical.bond_frequency << " axial " << axial << " rotation bound "
@@ -318,12 +318,12 @@ TEST_CASE("critical time step: a damped bonded block is stable just below it and
           "[dem][timestep]")
 {
     for (double zeta : {0.0, 0.3}) {
-        DemParameters p = quietParameters();
+        DemParameters p = quietDynamicsParameters();
         p.bond_tensile_strength = p.bond_cohesion = 1e12;
         p.bond_damping = zeta;
         p.damping_reading = DampingReading::criticalFraction;
         p.energy_growth_tolerance = 1e300;  // judge by the kinetic energy only
-        const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 2, {cell_size, cell_size, cell_size}, dilation);
+        const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 2, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation);
         const CriticalTimeStep critical = DemModel(mesh, p).criticalTimeStep();
         INFO("zeta " << zeta << ": critical " << critical.bond << " s, omega " << critical.bond_frequency
                      << ", mode damping " << critical.bond_damping_ratio);
@@ -342,7 +342,7 @@ TEST_CASE("a bonded 100-cell Voronoi cluster without damping keeps its energy", 
 {
     const VoronoiMesh mesh =
         generateVoronoiMesh(Domain::box({0.0, 0.0, 0.0}, {0.025, 0.025, 0.025}), 100, 2.5e-3, 17);
-    DemParameters p = quietParameters();
+    DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;  // no breakage
     DemModel model(mesh, p);
     REQUIRE(model.cells().size() == 100);

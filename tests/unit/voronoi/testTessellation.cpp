@@ -17,7 +17,7 @@ using namespace rockfrac;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double tessellationPi = 3.14159265358979323846;
 
 void checkInvariants(const VoronoiMesh& mesh)
 {
@@ -55,7 +55,7 @@ TEST_CASE("the 300-cell BDT disc keeps pi r^2 t within 0.5 %", "[voronoi][tessel
     const Domain disc = test::bdtDisc();
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
         const VoronoiMesh mesh = generateVoronoiMesh(disc, 300, 2.5e-3, seed);
-        const double exact = pi * 22.4e-3 * 22.4e-3 * 13.8e-3;
+        const double exact = tessellationPi * 22.4e-3 * 22.4e-3 * 13.8e-3;
         CHECK(std::fabs(test::sumOfVolumes(mesh) / exact - 1.0) < 0.005);
         checkInvariants(mesh);
         // Mean volume-equivalent diameter: the paper quotes 5.5 mm.
