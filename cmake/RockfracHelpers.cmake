@@ -49,8 +49,9 @@ endfunction()
 
 # rockfrac_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...]
 #                        [COST <s in a Release build> <s under the sanitizers>])
-# A Catch2 (v2) executable whose test cases run as one ctest entry. COST: as for
-# rockfrac_add_case_test below.
+# A Catch2 (v2) executable whose test cases run as one ctest entry. COST: measured
+# seconds, the first of a Release build, the second of a sanitized one (ordering only,
+# as for rockfrac_add_case_test below).
 function(rockfrac_add_unit_test name)
   cmake_parse_arguments(A "" "" "SOURCES;DEPS;LABELS;COST" ${ARGN})
   if(NOT A_LABELS)
@@ -72,6 +73,10 @@ function(rockfrac_add_unit_test name)
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}"
     ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin;${ROCKFRAC_SANITIZER_ENV}")
   if(A_COST)
+    list(LENGTH A_COST n)
+    if(NOT n EQUAL 2)
+      message(FATAL_ERROR "${name}: COST takes two values (seconds), got '${A_COST}'")
+    endif()
     list(GET A_COST 0 cost)
     if(ROCKFRAC_SANITIZE)
       list(GET A_COST 1 cost)
@@ -103,6 +108,10 @@ function(rockfrac_add_case_test name)
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}" TIMEOUT ${A_TIMEOUT}
     ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_BUILD_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=1;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_CASE_SIZE=${ROCKFRAC_CASE_SIZE};${ROCKFRAC_SANITIZER_ENV}")
   if(A_COST)
+    list(LENGTH A_COST n)
+    if(NOT n EQUAL 2)
+      message(FATAL_ERROR "${name}: COST takes two values (seconds), got '${A_COST}'")
+    endif()
     list(GET A_COST 0 cost)
     if(ROCKFRAC_CASE_SIZE STREQUAL "small")
       list(GET A_COST 1 cost)

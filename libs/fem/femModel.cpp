@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -38,21 +39,48 @@ FemModel::FemModel(const TetMesh& mesh, const FemParameters& parameters)
     computeMasses();
     contactNodes_ = boundaryNodes(mesh);
     computeContactStiffness();
-    computeContactAreas();
+    collectBoundaryFaces();
 }
 
-// A third of each boundary face's area to each of its nodes: the area over which a
-// contact node's force is spread, for the crushing pressure limit.
-void FemModel::computeContactAreas()
+// Boundary faces as (three contact-candidate indices, outward area vector / 3): what a
+// plate's projected contact areas are summed from.
+void FemModel::collectBoundaryFaces()
 {
-    std::vector<double> nodeArea(mesh_.numNodes(), 0.0);
-    for (const auto& f : boundaryFaces(mesh_)) {
+    std::vector<int> candidate(mesh_.numNodes(), -1);
+    for (std::size_t j = 0; j < contactNodes_.size(); ++j) candidate[contactNodes_[j]] = static_cast<int>(j);
+    std::map<std::array<int, 3>, std::array<int, 4>> faces;  // sorted ids -> (a, b, c, opposite)
+    for (const auto& t : mesh_.tets)
+        for (int skip = 0; skip < 4; ++skip) {
+            std::array<int, 3> face{}, sorted{};
+            for (int k = 0, m = 0; k < 4; ++k)
+                if (k != skip) face[m++] = t[k];
+            sorted = face;
+            std::sort(sorted.begin(), sorted.end());
+            auto [it, inserted] = faces.try_emplace(sorted, std::array<int, 4>{face[0], face[1], face[2], t[skip]});
+            if (!inserted) it->second[3] = -1;  // interior: shared by two tets
+        }
+    for (const auto& [sorted, f] : faces) {
+        if (f[3] < 0) continue;
         const Vec3 &a = mesh_.nodes[f[0]], &b = mesh_.nodes[f[1]], &c = mesh_.nodes[f[2]];
-        const double third = norm(cross(b - a, c - a)) / 6.0;
-        for (int n : f) nodeArea[n] += third;
+        Vec3 areaVector = 0.5 * cross(b - a, c - a);
+        if (dot(areaVector, mesh_.nodes[f[3]] - a) > 0.0) areaVector = -1.0 * areaVector;  // outward
+        boundaryFaces_.push_back({{candidate[f[0]], candidate[f[1]], candidate[f[2]]}, (1.0 / 3.0) * areaVector});
     }
-    contactArea_.resize(contactNodes_.size());
-    for (std::size_t j = 0; j < contactNodes_.size(); ++j) contactArea_[j] = nodeArea[contactNodes_[j]];
+}
+
+// A node's contact area against a plate: a third of each of its boundary faces' areas
+// projected on the plate, for the faces that face it (outward normal against the plate
+// normal), i.e. its share of the rock's footprint on the plate. The crushing pressure
+// limit acts on it.
+std::vector<double> FemModel::projectedContactAreas(const Vec3& plateNormal) const
+{
+    std::vector<double> area(contactNodes_.size(), 0.0);
+    for (const BoundaryFace& f : boundaryFaces_) {
+        const double facing = -dot(f.thirdAreaVector, plateNormal);
+        if (facing > 0.0)
+            for (int j : f.nodes) area[j] += facing;
+    }
+    return area;
 }
 
 // Node -> (element, local node) lists in increasing element order: the fixed
@@ -142,6 +170,7 @@ int FemModel::addPlate(const RigidPlate& plate)
     p.normal = normalised(p.normal);
     p.tangentialForces.assign(3 * contactNodes_.size(), 0.0);
     p.crushedDepth.assign(contactNodes_.size(), 0.0);
+    plateContactAreas_.push_back(projectedContactAreas(p.normal));
     state_.plates.push_back(std::move(p));
     forcesCurrent_ = false;
     return numPlates() - 1;
@@ -212,14 +241,16 @@ void FemModel::gatherInternalForces()
 // tangential motion of the step and capped at mu * normal force (slip). Serial over
 // the contact candidates so the plate forces are summed in a fixed order.
 // Contact crushing (when the pressure p_c > 0): a node's normal force is at most
-// p_c A_node. A penetration beyond p_c A_node / k is crushed rock, not elastic
+// p_c A_node, A_node its projected contact area on this plate. A penetration beyond p_c A_node / k is crushed rock, not elastic
 // overlap: it is added to the node's crushed depth c (which never shrinks), and the
 // node's contact surface lies c behind the plate from then on, F_n = k (delta - c).
 // Unloading is elastic; the work of the capped force over the crushed depth is
 // dissipated in the crushed layer, outside the rock's own energy balance.
 void FemModel::addContactForces(const std::vector<double>& displacementIncrement, double dt)
 {
-    for (auto& plate : state_.plates) {
+    for (std::size_t k = 0; k < state_.plates.size(); ++k) {
+        RigidPlate& plate = state_.plates[k];
+        const std::vector<double>& contactArea = plateContactAreas_[k];
         plate.force = {};
         const Vec3 planePoint = plate.point + plate.displacement;
         const Vec3 plateStep = dt * plate.velocity;
@@ -229,7 +260,7 @@ void FemModel::addContactForces(const std::vector<double>& displacementIncrement
             const double stiffness = contactStiffness_[j];
             double& crushed = plate.crushedDepth[j];
             double overlap = -dot(nodePosition(node) - planePoint, plate.normal) - crushed;
-            const double crushingForce = parameters_.contactCrushingPressure * contactArea_[j];
+            const double crushingForce = parameters_.contactCrushingPressure * contactArea[j];
             if (crushingForce > 0.0 && stiffness * overlap > crushingForce) {
                 crushed += overlap - crushingForce / stiffness;
                 overlap = crushingForce / stiffness;

@@ -55,7 +55,7 @@ struct RigidPlate {
     // Stick-slip history: tangential force on each contact candidate node (3 per node).
     std::vector<double> tangentialForces;
     // Contact crushing history: depth of rock crushed away under this plate at each
-    // contact candidate node (m, >= 0; zero while crushing is off).
+    // contact candidate node (m, >= 0; zero unless crushing is or was on in this run).
     std::vector<double> crushedDepth;
 };
 
@@ -144,14 +144,17 @@ public:
     const ElementGeometry& geometry() const { return geometry_; }
     const std::vector<double>& nodalMasses() const { return nodalMass_; }
     const std::vector<int>& contactNodes() const { return contactNodes_; }
-    // Each contact node's share of the boundary area (a third of each boundary face), m^2.
-    const std::vector<double>& contactAreas() const { return contactArea_; }
+    // Each contact node's contact area on plate `plate` (m^2): a third of each of its
+    // boundary faces that face the plate, projected on the plate. Their sum over a flat
+    // face lying on the plate is that face's area.
+    const std::vector<double>& contactAreas(int plate) const { return plateContactAreas_.at(plate); }
 
 private:
     void buildNodeElementLists();
     void computeMasses();
     void computeContactStiffness();
-    void computeContactAreas();
+    void collectBoundaryFaces();
+    std::vector<double> projectedContactAreas(const Vec3& plateNormal) const;
     double elementFrequencySquared(std::size_t element, double density) const;
     double contactStepFactor() const;
     // Forces at the current displacements; returns the first bad element or -1.
@@ -174,7 +177,12 @@ private:
     double addedMassFraction_ = 0.0;
     std::vector<int> contactNodes_;           // boundary nodes (contact candidates)
     std::vector<double> contactStiffness_;    // normal penalty per contact node
-    std::vector<double> contactArea_;         // boundary area per contact node (crushing)
+    struct BoundaryFace {
+        std::array<int, 3> nodes;  // contact-candidate indices
+        Vec3 thirdAreaVector;      // outward normal times a third of the area
+    };
+    std::vector<BoundaryFace> boundaryFaces_;
+    std::vector<std::vector<double>> plateContactAreas_;  // per plate, per contact node (crushing)
     std::vector<unsigned char> constrained_;  // bit k: component k prescribed
     std::vector<double> prescribedVelocity_;  // 3 per node
     std::vector<double> appliedForces_;       // 3 per node, empty = none

@@ -459,10 +459,14 @@ struct FeFractureRun::Impl {
     }
 
     // Contact crushing: per plate, the nodes crushed, the largest crushed depth and the
-    // crushed area (the nodes' contact areas), i.e. how far the contacts have flattened.
+    // crushed area (the nodes' projected contact areas), i.e. how far the contacts have
+    // flattened. Also when crushing is off now but a restart brought crushed depths.
     void reportContactCrushing() const
     {
-        if (!(loading.contactCrushingPressure > 0)) return;
+        bool anyCrushed = false;
+        for (int k = 0; k < model->numPlates(); ++k)
+            for (double c : model->plate(k).crushedDepth) anyCrushed = anyCrushed || c > 0;
+        if (!(loading.contactCrushingPressure > 0) && !anyCrushed) return;
         for (int k = 0; k < model->numPlates(); ++k) {
             const RigidPlate& p = model->plate(k);
             int nodes = 0;
@@ -471,7 +475,7 @@ struct FeFractureRun::Impl {
                 if (p.crushedDepth[j] > 0) {
                     ++nodes;
                     deepest = std::max(deepest, p.crushedDepth[j]);
-                    area += model->contactAreas()[j];
+                    area += model->contactAreas(k)[j];
                 }
             std::printf("Contact crushing under plate %s: %d nodes, %.4g mm^2, deepest %.4g mm\n", p.name.c_str(),
                         nodes, 1e6 * area, 1e3 * deepest);

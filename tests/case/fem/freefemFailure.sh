@@ -2,14 +2,15 @@
 # Failure-load distributions of feFractureSolver (3D, explicit, KST-DFH) and the FreeFEM
 # reference (tutorials/FreeFEM/BDT-KSTDFH.edp: 2D plane stress, static secant DFH) on a
 # thin granite disc (t = D/10) under the same arc pressure (2 x 5 degrees, load control),
-# over `seeds` seeds each: the medians within 15 %. Both use m = 7, sigma_w = 21 MPa,
+# over `seeds` seeds each (7 in CI, to keep it short; the documented comparison in
+# docs/validation.md is over 10: freefemFailure.sh <scratch> 10): the medians within 15 %. Both use m = 7, sigma_w = 21 MPa,
 # V_ref = 2e-8 m^3 and the same volume scaling; the failure load is the load at which
 # damage runs away at a fixed load (FreeFEM: more than 2 % of the triangles fail in one
 # load step; feFractureSolver: kinetic energy above 1 % of the external work).
 # What differs between the two: docs/validation.md (FreeFEM comparison).
 # Usage: freefemFailure.sh <scratch> [seeds] [3D element size] [2D element size].
 source "$(dirname "$0")/../caseTestFunctions"
-seeds="${2:-$(bySize 10 1)}"
+seeds="${2:-$(bySize 7 1)}"
 h3="${3:-$(bySize 2.0e-3 3.0e-3)}"
 h2="${4:-$(bySize 1.0e-3 2.0e-3)}"
 thickness=4.48e-3
@@ -58,7 +59,7 @@ echo "FreeFEM failure loads [N]: $(sort -g "$work/freefem.txt" | tr '\n' ' ')"
 echo "feFractureSolver failure loads [N]: $(sort -g "$work/fe.txt" | tr '\n' ' ')"
 awk -v a="$m3" -v b="$m2" 'BEGIN { e = a / b - 1;
     printf "median failure load: feFractureSolver %.5g N, FreeFEM %.5g N: %+.1f %%\n", a, b, 100 * e }'
-if fullSize "the medians of 10 seeds within 15 %"; then
+if fullSize "the medians of $seeds seeds within 15 %"; then
     awk -v a="$m3" -v b="$m2" 'BEGIN { e = a / b - 1; exit !(e > -0.15 && e < 0.15) }' ||
         fail "failure-load medians differ by more than 15 %"
 fi

@@ -10,13 +10,15 @@
 # Usage: spbFem.sh <scratch> [granite|limestone] [element size, default the tutorial's]
 #        [plate speed m/s, default the tutorial's] [rocks, default all: "rock1 rock3"]
 #        [massScalingTimeStep s, default the tutorial's]
-#        [plates/crushingPressure Pa, default the tutorial's; 0 = off].
+#        [plates/crushingPressure Pa, default the tutorial's; 0 = off]
+#        [endTime s, default the tutorial's].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
 speed="${4:-}"
 massStep="${6:-}"
 crushing="${7:-}"
+endTime="${8:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
@@ -34,9 +36,11 @@ for rock in $rocks; do
     [ -z "$h" ] || caseDict -case "$c" system/feMeshDict -entry elementSize -set "$h" > /dev/null
     [ -z "$speed" ] || caseDict -case "$c" constant/loading -entry plates/upper/velocity -set "(0 0 -$speed)" > /dev/null
     if [ -n "$crushing" ]; then
-        verb=-add; grep -q "crushingPressure" "$c/constant/loading" && verb=-set
+        verb=-add
+        caseDict -case "$c" constant/loading -entry plates/crushingPressure -value > /dev/null 2>&1 && verb=-set
         caseDict -case "$c" constant/loading -entry plates/crushingPressure $verb "[Pa] $crushing" > /dev/null
     fi
+    [ -z "$endTime" ] || caseDict -case "$c" system/controlDict -entry endTime -set "$endTime" > /dev/null
     [ -z "$massStep" ] || caseDict -case "$c" system/controlDict -entry massScalingTimeStep -set "$massStep" > /dev/null
     caseDict -case "$c" system/controlDict -entry writeInterval -set 1 > /dev/null  # VTK at the end only
     (cd "$c" && meshRock > log.meshRock 2>&1) || fail "meshRock $rock: $(tail -3 "$c/log.meshRock")"

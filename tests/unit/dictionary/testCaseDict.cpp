@@ -30,7 +30,7 @@ Run caseDict(const ScratchDir& scratch, const std::string& arguments)
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
-const std::string rockProperties =
+const std::string caseDictRockProperties =
     "FoamFile { format ascii; class dictionary; object rockProperties; }\n"
     "// granite\n"
     "E               [Pa] 77e9;\n"
@@ -43,7 +43,7 @@ TEST_CASE("caseDict prints the expanded dictionary, an entry, a value, the keywo
           "[dictionary][caseDict]")
 {
     ScratchDir scratch;
-    scratch.write("constant/rockProperties", rockProperties);
+    scratch.write("constant/rockProperties", caseDictRockProperties);
     const Run all = caseDict(scratch, "constant/rockProperties");
     CHECK(all.exitCode == 0);
     CHECK(all.output.find("E               [1 -1 -2 0 0 0 0] 77e9;\n") != std::string::npos);
@@ -59,14 +59,14 @@ TEST_CASE("caseDict prints the expanded dictionary, an entry, a value, the keywo
 TEST_CASE("caseDict -set, -add, -remove edit in place and keep the rest", "[dictionary][caseDict]")
 {
     ScratchDir scratch;
-    const auto file = scratch.write("constant/rockProperties", rockProperties);
+    const auto file = scratch.write("constant/rockProperties", caseDictRockProperties);
     CHECK(caseDict(scratch, "constant/rockProperties -entry bond/tensileStrength -set 28e6").exitCode == 0);
     CHECK(caseDict(scratch, "constant/rockProperties -entry bond/cohesion -add 5e6 -comment 'from BDT 3'")
               .exitCode == 0);
     CHECK(caseDict(scratch, "constant/rockProperties -entry E -remove -dry-run").exitCode == 0);
     // bond/area uses $r: removing r would leave a file the applications cannot read.
     CHECK(caseDict(scratch, "constant/rockProperties -entry r -remove").exitCode == 1);
-    std::string expected = rockProperties;
+    std::string expected = caseDictRockProperties;
     expected.replace(expected.find("20e6"), 4, "28e6");
     expected.insert(expected.find("\n}\n"), "\n    cohesion 5e6; // from BDT 3");
     CHECK(readText(file) == expected);
@@ -75,7 +75,7 @@ TEST_CASE("caseDict -set, -add, -remove edit in place and keep the rest", "[dict
 TEST_CASE("caseDict fails with exit code 1 and one line", "[dictionary][caseDict]")
 {
     ScratchDir scratch;
-    const auto file = scratch.write("constant/rockProperties", rockProperties);
+    const auto file = scratch.write("constant/rockProperties", caseDictRockProperties);
     const std::string path = file.string();
     const Run missing = caseDict(scratch, "constant/rockProperties -entry bond/nothing -set 1");
     CHECK(missing.exitCode == 1);
@@ -86,7 +86,7 @@ TEST_CASE("caseDict fails with exit code 1 and one line", "[dictionary][caseDict
     const Run broken = caseDict(scratch, "constant/rockProperties -entry r -set '$undefined'");
     CHECK(broken.exitCode == 1);
     CHECK(broken.output.find("undefined variable '$undefined'") != std::string::npos);
-    CHECK(readText(file) == rockProperties);
+    CHECK(readText(file) == caseDictRockProperties);
     CHECK(caseDict(scratch, "constant/rockProperties -set 1").output ==
           "caseDict: error: -set, -add and -remove need -entry <key>: which entry to change\n");
     CHECK(caseDict(scratch, "constant/absent").exitCode == 1);

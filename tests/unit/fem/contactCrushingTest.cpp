@@ -41,7 +41,7 @@ struct PressedBlock {
         double area = 0.0;
         const auto& nodes = model->contactNodes();
         for (std::size_t j = 0; j < nodes.size(); ++j)
-            if (mesh.nodes[nodes[j]].z > blockSize - 1e-12) area += model->contactAreas()[j];
+            if (mesh.nodes[nodes[j]].z > blockSize - 1e-12) area += model->contactAreas(1)[j];
         return area;
     }
     TetMesh mesh;
@@ -50,19 +50,30 @@ struct PressedBlock {
 
 }  // namespace
 
-TEST_CASE("contact areas: each boundary face's area shared by its three nodes", "[fem][crushing]")
+TEST_CASE("contact areas: the footprint of the faces that face the plate", "[fem][crushing]")
 {
     test::GmshSession gmshSession;
-    const TetMesh mesh = test::boxMesh(gmshSession, 0.02, 0.01, 0.005, 0.003);
+    const double lx = 0.02, ly = 0.01, lz = 0.005;
+    const TetMesh mesh = test::boxMesh(gmshSession, lx, ly, lz, 0.003);
     FemParameters parameters;
     parameters.materialName = "linearElastic";
     FemModel model(mesh, parameters);
-    double total = 0.0;
-    for (double a : model.contactAreas()) {
-        CHECK(a > 0.0);
-        total += a;
+    RigidPlate bottom, tilted;
+    bottom.normal = {0, 0, 1};
+    tilted.normal = {1, 0, 1};  // 45 degrees: sees the bottom face and the x = 0 face
+    model.addPlate(bottom);
+    model.addPlate(tilted);
+    double onBottom = 0.0, offBottom = 0.0, onTilted = 0.0;
+    const auto& nodes = model.contactNodes();
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+        const double a = model.contactAreas(0)[j];
+        CHECK(a >= 0.0);
+        (mesh.nodes[nodes[j]].z < 1e-12 ? onBottom : offBottom) += a;
+        onTilted += model.contactAreas(1)[j];
     }
-    CHECK(total == Approx(2.0 * (0.02 * 0.01 + 0.01 * 0.005 + 0.005 * 0.02)).epsilon(1e-12));
+    CHECK(onBottom == Approx(lx * ly).epsilon(1e-12));  // the bottom face, projected: itself
+    CHECK(offBottom == 0.0);                            // no other face looks down
+    CHECK(onTilted == Approx((lx * ly + ly * lz) / std::sqrt(2.0)).epsilon(1e-12));
 }
 
 TEST_CASE("contact crushing caps each node at p_c A and crushes irreversibly", "[fem][crushing]")
@@ -88,9 +99,9 @@ TEST_CASE("contact crushing caps each node at p_c A and crushes irreversibly", "
     REQUIRE(topNodes > 4);
     CHECK(crushedTop == topNodes);      // the whole face crushes...
     CHECK(largestElsewhere == 0.0);     // ...and nothing the plate does not touch
-    // Every top node at its cap: the plate force is exactly p_c times their areas.
-    const double cap = crushingPressure * block.topFaceNodeArea();
-    CHECK(top.force.z == Approx(cap).epsilon(1e-9));
+    // Every top node at its cap: the plate carries exactly p_c over the face's area.
+    CHECK(block.topFaceNodeArea() == Approx(blockSize * blockSize).epsilon(1e-12));
+    CHECK(top.force.z == Approx(crushingPressure * blockSize * blockSize).epsilon(1e-9));
 
     // Lift the plate: the force vanishes, the crushed depths stay.
     const std::vector<double> crushed = top.crushedDepth;

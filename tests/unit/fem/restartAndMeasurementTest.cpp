@@ -1,4 +1,5 @@
 // Restart continuity, the virtual extensometer and the failure-load detector.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstring>
 
@@ -11,9 +12,10 @@ using namespace rockfrac::fem;
 
 namespace {
 
-FemParameters crushingParameters()
+FemParameters crushingParameters(double contactCrushingPressure = 0.0)
 {
     FemParameters parameters;
+    parameters.contactCrushingPressure = contactCrushingPressure;
     parameters.material.weibullStress = 2e6;
     parameters.material.referenceVolume = 1e-9;
     parameters.massDamping = 1e4;
@@ -34,10 +36,12 @@ void addCrushingPlates(FemModel& model, double size)
 
 TEST_CASE("a restarted model continues bit for bit", "[fem][restart]")
 {
+    // Without and with contact crushing (whose crushed depths are part of the state).
+    const double crushingPressure = GENERATE(0.0, 20e6);
     test::GmshSession gmshSession;
     const double size = 0.01;
     const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.25 * size);
-    FemModel original(mesh, crushingParameters());
+    FemModel original(mesh, crushingParameters(crushingPressure));
     addCrushingPlates(original, size);
     const double dt = original.stableTimeStep();
     for (int i = 0; i < 200; ++i) REQUIRE(original.step(dt).ok);
@@ -47,7 +51,7 @@ TEST_CASE("a restarted model continues bit for bit", "[fem][restart]")
     std::vector<std::vector<double>> savedFields;
     for (const auto& field : original.material().stateFields()) savedFields.push_back(*field.values);
 
-    FemModel restarted(mesh, crushingParameters());
+    FemModel restarted(mesh, crushingParameters(crushingPressure));
     addCrushingPlates(restarted, size);
     restarted.setState(saved);
     auto fields = restarted.material().stateFields();
@@ -62,6 +66,10 @@ TEST_CASE("a restarted model continues bit for bit", "[fem][restart]")
     CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
     CHECK(original.plate(1).force.z == restarted.plate(1).force.z);
     CHECK(original.energy().internalWork == restarted.energy().internalWork);
+    CHECK(original.plate(1).crushedDepth == restarted.plate(1).crushedDepth);
+    double deepest = 0.0;
+    for (double c : original.plate(1).crushedDepth) deepest = std::max(deepest, c);
+    CHECK((deepest > 0.0) == (crushingPressure > 0.0));  // the crushing path was exercised
 }
 
 TEST_CASE("the virtual extensometer reads the strain along its axis times its length", "[fem][measure]")
