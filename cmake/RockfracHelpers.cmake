@@ -47,6 +47,24 @@ function(rockfrac_add_application name)
   rockfrac_target_options(${name})
 endfunction()
 
+# rockfrac_set_test_cost(<test> "<first>;<second>" <use second: ON|OFF>): the COST
+# property (measured seconds, used by ctest to start the longest tests first); no
+# values, no property.
+function(rockfrac_set_test_cost name costs useSecond)
+  if(NOT costs)
+    return()
+  endif()
+  list(LENGTH costs n)
+  if(NOT n EQUAL 2)
+    message(FATAL_ERROR "${name}: COST takes two values (seconds), got '${costs}'")
+  endif()
+  list(GET costs 0 cost)
+  if(useSecond)
+    list(GET costs 1 cost)
+  endif()
+  set_tests_properties(${name} PROPERTIES COST ${cost})
+endfunction()
+
 # rockfrac_add_unit_test(<name> SOURCES ... DEPS ... [LABELS ...]
 #                        [COST <s in a Release build> <s under the sanitizers>])
 # A Catch2 (v2) executable whose test cases run as one ctest entry. COST: measured
@@ -72,17 +90,11 @@ function(rockfrac_add_unit_test name)
   add_test(NAME ${name} COMMAND test_${name})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}"
     ENVIRONMENT "OMP_NUM_THREADS=2;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_BIN=${PROJECT_BINARY_DIR}/bin;${ROCKFRAC_SANITIZER_ENV}")
-  if(A_COST)
-    list(LENGTH A_COST n)
-    if(NOT n EQUAL 2)
-      message(FATAL_ERROR "${name}: COST takes two values (seconds), got '${A_COST}'")
-    endif()
-    list(GET A_COST 0 cost)
-    if(ROCKFRAC_SANITIZE)
-      list(GET A_COST 1 cost)
-    endif()
-    set_tests_properties(${name} PROPERTIES COST ${cost})
+  set(second OFF)
+  if(ROCKFRAC_SANITIZE)
+    set(second ON)
   endif()
+  rockfrac_set_test_cost(${name} "${A_COST}" ${second})
 endfunction()
 
 # rockfrac_add_case_test(<name> SCRIPT <file.sh> [LABELS ...] [TIMEOUT s]
@@ -107,17 +119,11 @@ function(rockfrac_add_case_test name)
     COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/${A_SCRIPT} ${work})
   set_tests_properties(${name} PROPERTIES LABELS "${A_LABELS}" TIMEOUT ${A_TIMEOUT}
     ENVIRONMENT "PATH=${PROJECT_BINARY_DIR}/bin:$ENV{PATH};ROCKFRAC_SOURCE_DIR=${PROJECT_SOURCE_DIR};ROCKFRAC_BINARY_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_BUILD_DIR=${PROJECT_BINARY_DIR};ROCKFRAC_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;OMP_NUM_THREADS=1;OMP_WAIT_POLICY=PASSIVE;ROCKFRAC_CASE_SIZE=${ROCKFRAC_CASE_SIZE};${ROCKFRAC_SANITIZER_ENV}")
-  if(A_COST)
-    list(LENGTH A_COST n)
-    if(NOT n EQUAL 2)
-      message(FATAL_ERROR "${name}: COST takes two values (seconds), got '${A_COST}'")
-    endif()
-    list(GET A_COST 0 cost)
-    if(ROCKFRAC_CASE_SIZE STREQUAL "small")
-      list(GET A_COST 1 cost)
-    endif()
-    set_tests_properties(${name} PROPERTIES COST ${cost})
+  set(second OFF)
+  if(ROCKFRAC_CASE_SIZE STREQUAL "small")
+    set(second ON)
   endif()
+  rockfrac_set_test_cost(${name} "${A_COST}" ${second})
 endfunction()
 
 # Add every immediate or nested subdirectory of <dir> that has a CMakeLists.txt,
