@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -48,23 +47,12 @@ void FemModel::collectBoundaryFaces()
 {
     std::vector<int> candidate(mesh_.numNodes(), -1);
     for (std::size_t j = 0; j < contactNodes_.size(); ++j) candidate[contactNodes_[j]] = static_cast<int>(j);
-    std::map<std::array<int, 3>, std::array<int, 4>> faces;  // sorted ids -> (a, b, c, opposite)
-    for (const auto& t : mesh_.tets)
-        for (int skip = 0; skip < 4; ++skip) {
-            std::array<int, 3> face{}, sorted{};
-            for (int k = 0, m = 0; k < 4; ++k)
-                if (k != skip) face[m++] = t[k];
-            sorted = face;
-            std::sort(sorted.begin(), sorted.end());
-            auto [it, inserted] = faces.try_emplace(sorted, std::array<int, 4>{face[0], face[1], face[2], t[skip]});
-            if (!inserted) it->second[3] = -1;  // interior: shared by two tets
-        }
-    for (const auto& [sorted, f] : faces) {
-        if (f[3] < 0) continue;
+    for (const auto& f : boundaryFaces(mesh_)) {
         const Vec3 &a = mesh_.nodes[f[0]], &b = mesh_.nodes[f[1]], &c = mesh_.nodes[f[2]];
         Vec3 areaVector = 0.5 * cross(b - a, c - a);
         if (dot(areaVector, mesh_.nodes[f[3]] - a) > 0.0) areaVector = -1.0 * areaVector;  // outward
-        boundaryFaces_.push_back({{candidate[f[0]], candidate[f[1]], candidate[f[2]]}, (1.0 / 3.0) * areaVector});
+        boundaryFaces_.push_back(
+            {{candidate[f[0]], candidate[f[1]], candidate[f[2]]}, (1.0 / 3.0) * areaVector});
     }
 }
 
@@ -241,11 +229,11 @@ void FemModel::gatherInternalForces()
 // tangential motion of the step and capped at mu * normal force (slip). Serial over
 // the contact candidates so the plate forces are summed in a fixed order.
 // Contact crushing (when the pressure p_c > 0): a node's normal force is at most
-// p_c A_node, A_node its projected contact area on this plate. A penetration beyond p_c A_node / k is crushed rock, not elastic
-// overlap: it is added to the node's crushed depth c (which never shrinks), and the
-// node's contact surface lies c behind the plate from then on, F_n = k (delta - c).
-// Unloading is elastic; the work of the capped force over the crushed depth is
-// dissipated in the crushed layer, outside the rock's own energy balance.
+// p_c A_node, A_node its projected contact area on this plate. A penetration beyond p_c A_node / k is crushed
+// rock, not elastic overlap: it is added to the node's crushed depth c (which never shrinks), and the node's
+// contact surface lies c behind the plate from then on, F_n = k (delta - c). Unloading is elastic; the work
+// of the capped force over the crushed depth is dissipated in the crushed layer, outside the rock's own
+// energy balance.
 void FemModel::addContactForces(const std::vector<double>& displacementIncrement, double dt)
 {
     for (std::size_t k = 0; k < state_.plates.size(); ++k) {
@@ -426,7 +414,8 @@ void FemModel::checkStateSizes(const FemState& s) const
         throw UserError("FEM restart: element stresses do not match the mesh");
     if (s.plates.size() != state_.plates.size()) throw UserError("FEM restart: the number of plates differs");
     for (const auto& p : s.plates)
-        if (p.tangentialForces.size() != 3 * contactNodes_.size() || p.crushedDepth.size() != contactNodes_.size())
+        if (p.tangentialForces.size() != 3 * contactNodes_.size() ||
+            p.crushedDepth.size() != contactNodes_.size())
             throw UserError("FEM restart: plate '" + p.name + "' contact history does not match the mesh");
 }
 

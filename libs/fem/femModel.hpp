@@ -175,17 +175,17 @@ private:
     std::vector<double> elementEigenstiffness_;  // lambda_max(K_e) per element
     std::vector<double> nodalMass_, physicalNodalMass_;
     double addedMassFraction_ = 0.0;
-    std::vector<int> contactNodes_;           // boundary nodes (contact candidates)
-    std::vector<double> contactStiffness_;    // normal penalty per contact node
+    std::vector<int> contactNodes_;         // boundary nodes (contact candidates)
+    std::vector<double> contactStiffness_;  // normal penalty per contact node
     struct BoundaryFace {
         std::array<int, 3> nodes;  // contact-candidate indices
         Vec3 thirdAreaVector;      // outward normal times a third of the area
     };
     std::vector<BoundaryFace> boundaryFaces_;
     std::vector<std::vector<double>> plateContactAreas_;  // per plate, per contact node (crushing)
-    std::vector<unsigned char> constrained_;  // bit k: component k prescribed
-    std::vector<double> prescribedVelocity_;  // 3 per node
-    std::vector<double> appliedForces_;       // 3 per node, empty = none
+    std::vector<unsigned char> constrained_;              // bit k: component k prescribed
+    std::vector<double> prescribedVelocity_;              // 3 per node
+    std::vector<double> appliedForces_;                   // 3 per node, empty = none
     bool forcesCurrent_ = false;
     FemState state_;
     // Scratch of step(), kept between steps so a step allocates nothing: the displacement

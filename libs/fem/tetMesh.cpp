@@ -93,28 +93,29 @@ void checkTetQuality(const TetMesh& mesh)
     }
 }
 
-std::vector<std::array<int, 3>> boundaryFaces(const TetMesh& mesh)
+std::vector<std::array<int, 4>> boundaryFaces(const TetMesh& mesh)
 {
-    // Count each face by its sorted node triple; boundary faces occur once.
-    std::map<std::array<int, 3>, int> faceCount;
+    // Each face by its sorted node triple; a face shared by two tets is interior.
+    std::map<std::array<int, 3>, std::array<int, 4>> faces;
     constexpr int faceNodes[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
     for (const auto& t : mesh.tets)
-        for (const auto& f : faceNodes) {
-            std::array<int, 3> face = {t[f[0]], t[f[1]], t[f[2]]};
-            std::sort(face.begin(), face.end());
-            ++faceCount[face];
+        for (int f = 0; f < 4; ++f) {
+            std::array<int, 3> key = {t[faceNodes[f][0]], t[faceNodes[f][1]], t[faceNodes[f][2]]};
+            std::sort(key.begin(), key.end());
+            auto [it, inserted] = faces.emplace(key, std::array<int, 4>{key[0], key[1], key[2], t[f]});
+            if (!inserted) it->second[3] = -1;
         }
-    std::vector<std::array<int, 3>> faces;
-    for (const auto& [face, count] : faceCount)
-        if (count == 1) faces.push_back(face);
-    return faces;
+    std::vector<std::array<int, 4>> boundary;
+    for (const auto& [key, face] : faces)
+        if (face[3] >= 0) boundary.push_back(face);
+    return boundary;
 }
 
 std::vector<int> boundaryNodes(const TetMesh& mesh)
 {
     std::vector<char> onBoundary(mesh.numNodes(), 0);
     for (const auto& face : boundaryFaces(mesh))
-        for (int n : face) onBoundary[n] = 1;
+        for (int k = 0; k < 3; ++k) onBoundary[face[k]] = 1;
     std::vector<int> nodes;
     for (std::size_t n = 0; n < onBoundary.size(); ++n)
         if (onBoundary[n]) nodes.push_back(static_cast<int>(n));

@@ -54,7 +54,8 @@ TetMesh tetMeshFromGmshModel();
 
 // Nodes on the boundary: the nodes of faces that belong to exactly one tet.
 std::vector<int> boundaryNodes(const TetMesh& mesh);
-// Faces on the boundary (node triples, sorted), in a fixed order.
-std::vector<std::array<int, 3>> boundaryFaces(const TetMesh& mesh);
+// Faces on the boundary, in a fixed order: (a, b, c, opposite) with a < b < c the
+// face's nodes and `opposite` the fourth node of its tet (which side is inside).
+std::vector<std::array<int, 4>> boundaryFaces(const TetMesh& mesh);
 
 }  // namespace rockfrac::fem

@@ -94,7 +94,8 @@ FemLoading readFemLoading(const Dictionary& d)
         l.contactPenaltyScale = p.getScalarOrDefault("contactPenaltyScale", 1.0, Bounds::positive());
         l.tangentialPenaltyRatio = p.getScalarOrDefault("tangentialPenaltyRatio", 1.0, Bounds::nonNegative());
         static const Dimensions pascal = Dimensions::fromUnits("Pa");
-        l.contactCrushingPressure = p.getScalarOrDefault("crushingPressure", 0.0, Bounds::nonNegative(), &pascal);
+        l.contactCrushingPressure =
+            p.getScalarOrDefault("crushingPressure", 0.0, Bounds::nonNegative(), &pascal);
         if (!(l.approachSpeed() > 0))
             throw UserError(
                 d.fileName() +
@@ -128,16 +129,7 @@ FemLoading readFemLoading(const Dictionary& d)
 std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, double halfAngle,
                                       double& topForce)
 {
-    // Boundary faces (once in the tet list), oriented outwards from their tet.
-    std::map<std::array<int, 3>, std::array<int, 4>> faces;  // sorted ids -> (a, b, c, opposite)
-    constexpr int faceNodes[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-    for (const auto& t : mesh.tets)
-        for (int f = 0; f < 4; ++f) {
-            std::array<int, 3> key = {t[faceNodes[f][0]], t[faceNodes[f][1]], t[faceNodes[f][2]]};
-            std::sort(key.begin(), key.end());
-            auto [it, inserted] = faces.emplace(key, std::array<int, 4>{key[0], key[1], key[2], t[f]});
-            if (!inserted) faces.erase(it);
-        }
+    const std::vector<std::array<int, 4>> faces = boundaryFaces(mesh);  // (a, b, c, opposite)
     std::vector<double> forces(3 * mesh.numNodes(), 0.0);
     const double cosLimit = std::cos(halfAngle);
     // The arcs are integrated exactly, not facet by facet: with a few facets across an
@@ -150,7 +142,7 @@ std::vector<double> arcLoadUnitForces(const TetMesh& mesh, const Vec3& centre, d
     // nodes with the linear shape functions at that centroid (consistent nodal forces of
     // the pressure on the exact arc, up to h/n along its edges).
     constexpr int n = 24;
-    for (const auto& [key, f] : faces) {
+    for (const auto& f : faces) {
         const Vec3 &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
         Vec3 areaNormal = 0.5 * cross(b - a, c - a);  // |.| = area
         const Vec3 centroid = (a + b + c) / 3.0;

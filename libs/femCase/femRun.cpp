@@ -477,8 +477,8 @@ struct FeFractureRun::Impl {
                     deepest = std::max(deepest, p.crushedDepth[j]);
                     area += model->contactAreas(k)[j];
                 }
-            std::printf("Contact crushing under plate %s: %d nodes, %.4g mm^2, deepest %.4g mm\n", p.name.c_str(),
-                        nodes, 1e6 * area, 1e3 * deepest);
+            std::printf("Contact crushing under plate %s: %d nodes, %.4g mm^2, deepest %.4g mm\n",
+                        p.name.c_str(), nodes, 1e6 * area, 1e3 * deepest);
         }
     }
 
@@ -594,8 +594,9 @@ void FeFractureRun::printSetup() const
             r.loading.upper.friction, r.loading.lower.friction, 1e3 * r.loading.startGap,
             r.loading.settlingTime, r.loading.gravity.x, r.loading.gravity.y, r.loading.gravity.z);
     if (r.loading.kind == FemLoading::Kind::plates && r.loading.contactCrushingPressure > 0)
-        std::printf("Contact crushing: plate pressure on a contact node at most %.4g MPa (plates/crushingPressure)\n",
-                    1e-6 * r.loading.contactCrushingPressure);
+        std::printf(
+            "Contact crushing: plate pressure on a contact node at most %.4g MPa (plates/crushingPressure)\n",
+            1e-6 * r.loading.contactCrushingPressure);
     if (r.loading.kind == FemLoading::Kind::arcLoad)
         std::printf(
             "Arc load: 2 x %.4g deg arcs, pressure rate %.4g Pa/s, resultant %.5g N per Pa of pressure\n",

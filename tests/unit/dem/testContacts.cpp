@@ -61,7 +61,8 @@ void placeOnFloor(DemModel& model, double overlap, const Vec3& velocity = {})
 TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touch at zero overlap",
           "[dem][core]")
 {
-    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation),
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation),
                    quietContactParameters());
     const CellArrays& cells = model.cells();
     CHECK(model.counters().shrunk_cores == 0);
@@ -79,14 +80,17 @@ TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touc
     b.position = cells.position[1];
     a.rotation = rotationMatrix(cells.orientation[0]);
     b.rotation = rotationMatrix(cells.orientation[1]);
-    CHECK(gjkDistance(a, b, a.position - b.position).distance == Approx(2.0 * contact_dilation).epsilon(1e-12));
+    CHECK(gjkDistance(a, b, a.position - b.position).distance ==
+          Approx(2.0 * contact_dilation).epsilon(1e-12));
 }
 
 TEST_CASE("a thin cell whose erosion vanishes falls back to a shrunk core and is counted", "[dem][core]")
 {
     DemParameters p = quietContactParameters();
     p.dilation_radius = 0.6 * contact_cell_size;  // larger than half the cell: erosion empties it
-    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation, false),
+                   p);
     CHECK(model.counters().shrunk_cores == 1);
     CHECK(model.cells().core_vertex_offset[1] == 8);
 }
@@ -94,7 +98,9 @@ TEST_CASE("a thin cell whose erosion vanishes falls back to a shrunk core and is
 TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem][contact][wall]")
 {
     const DemParameters p = quietContactParameters();
-    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation, false),
+                   p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio,
                                            p.steel_youngs_modulus, p.steel_poisson_ratio);
@@ -115,7 +121,9 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
           "[dem][contact]")
 {
     const DemParameters p = quietContactParameters();
-    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation), p);
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation),
+                   p);
     const Vec3 rest = model.cells().position[1];
     const Quat q = model.cells().orientation[1];
     const double overlap = 2e-6;
@@ -144,7 +152,8 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
 TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[dem][wall]")
 {
     const DemParameters p = quietContactParameters();
-    const VoronoiMesh mesh = test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false);
+    const VoronoiMesh mesh = test::boxBlockMesh(
+        1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false);
     DemModel analytic(mesh, p), triangulated(mesh, p);
     analytic.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     const double half = 0.05;
@@ -301,7 +310,9 @@ namespace {
 // faces parallel to them, each of the eight core corners overlapping by `overlap`.
 DemModel boxBetweenPlates(const DemParameters& p, double overlap)
 {
-    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation, false),
+                   p);
     const double half = 0.5 * contact_cell_size;  // core half size + r_d
     const Vec3 centre = model.cells().position[0];
     model.addPlate(centre - Vec3{0.0, 0.0, half - overlap}, {0.0, 0.0, 1.0});
@@ -416,7 +427,8 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
     p.bond_tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
     p.bond_cohesion = 3e5;
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.05;  // brittle: d_f of a few um
-    const VoronoiMesh mesh = test::boxBlockMesh(2, 2, 2, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation);
+    const VoronoiMesh mesh = test::boxBlockMesh(
+        2, 2, 2, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation);
     DemModel analytic(mesh, p), fromStl(mesh, p);
     double zMin = 1e300, zMax = -1e300;
     for (const auto& v : mesh.vertices) zMin = std::min(zMin, v.z), zMax = std::max(zMax, v.z);
@@ -463,12 +475,14 @@ double ridgeRockingError(double ridge_degrees, double tilt_degrees, int& interse
     DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 1.0;
     p.rock_steel_friction = 0.0;
-    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation, false),
+                   p);
     const Vec3 centre = model.cells().position[0];
     const double degree = 3.14159265358979 / 180.0;
     const double L = 0.02, slope = std::tan(ridge_degrees * degree);
     const double zr = centre.z - 0.5 * contact_cell_size + 2e-6;  // ridge 2 um into the cell's bottom face
-    const double x0 = centre.x + 1e-3;                    // ridge 1 mm beside the centre
+    const double x0 = centre.x + 1e-3;                            // ridge 1 mm beside the centre
     const double zl = zr - L * slope;
     const double tilt = std::tan(tilt_degrees * degree);
     std::vector<Vec3> roof{{x0 - L, -L, zl}, {x0, -L, zr},     {x0, L, zr},
@@ -613,7 +627,9 @@ TEST_CASE(
     DemParameters p = quietContactParameters();
     p.rock_steel_restitution = 1.0;
     p.rock_steel_friction = 0.0;
-    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation, false), p);
+    DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation, false),
+                   p);
     const Vec3 centre = model.cells().position[0];
     const double L = 0.02, slope = std::tan(10.0 * 3.14159265358979 / 180.0);
     std::vector<Vec3> roof{{-L, -L, -L * slope}, {0, -L, 0},          {0, L, 0},

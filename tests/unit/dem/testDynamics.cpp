@@ -68,7 +68,9 @@ TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][
 {
     DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;  // no breakage
-    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
+    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                                      dynamics_dilation),
+                   p);
     REQUIRE(model.cells().size() == 100);
     shake(model, 0.05, 20.0, 7);
     test::evaluateForces(model, 0.0);
@@ -103,8 +105,8 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
-                                      {0.0, 0.0, 0.2 * dynamics_dilation}),
+    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                                      dynamics_dilation, true, {0.0, 0.0, 0.2 * dynamics_dilation}),
                    p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
     shake(model, 0.5, 50.0, 11);
@@ -143,7 +145,9 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
 {
     DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
-    DemModel model(test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
+    DemModel model(test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                                      dynamics_dilation),
+                   p);
     shake(model, 0.05, 0.0, 3);
     const double dt = 2.0 * model.rayleighTimeStep();
     long failed_at = -1;
@@ -163,7 +167,8 @@ TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
     const int side = 20;
     DemModel model(
-        test::boxBlockMesh(side, side, side, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true, {}, {3, 4}),
+        test::boxBlockMesh(side, side, side, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                           dynamics_dilation, true, {}, {3, 4}),
         p);
     shake(model, 0.01, 2.0, 5);
     const double dt = 0.02 * model.rayleighTimeStep();
@@ -187,8 +192,9 @@ TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "
     p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    const VoronoiMesh mesh = test::boxBlockMesh(4, 4, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
-                                                {0.0, 0.0, 0.2 * dynamics_dilation});
+    const VoronoiMesh mesh =
+        test::boxBlockMesh(4, 4, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                           dynamics_dilation, true, {0.0, 0.0, 0.2 * dynamics_dilation});
     DemModel original(mesh, p);
     original.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, 0.01});
     shake(original, 0.5, 50.0, 13);
@@ -231,13 +237,15 @@ TEST_CASE("a wall velocity set to its value keeps the forces; a new value re-eva
     DemParameters p;
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation, true,
-                                                {0.0, 0.0, 0.2 * dynamics_dilation});
+    const VoronoiMesh mesh =
+        test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                           dynamics_dilation, true, {0.0, 0.0, 0.2 * dynamics_dilation});
     const Vec3 push{0.0, 0.0, -0.5};
     auto make = [&] {
         DemModel model(mesh, p);
         model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
-        model.addPlate({0.0, 0.0, 3.0 * dynamics_cell_size + 0.2 * dynamics_dilation - 1e-6}, {0.0, 0.0, -1.0},
+        model.addPlate({0.0, 0.0, 3.0 * dynamics_cell_size + 0.2 * dynamics_dilation - 1e-6},
+                       {0.0, 0.0, -1.0},
                        push);  // 1 um in
         shake(model, 0.05, 5.0, 17);
         return model;
@@ -276,7 +284,9 @@ TEST_CASE("critical time step: two bonded cells against the analytic omega = sqr
 {
     DemParameters p = quietDynamicsParameters();
     p.bond_tensile_strength = p.bond_cohesion = 1e12;
-    DemModel model(test::boxBlockMesh(2, 1, 1, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation), p);
+    DemModel model(test::boxBlockMesh(2, 1, 1, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+                                      dynamics_dilation),
+                   p);
     const double k_n = p.bond_youngs_modulus * (1.0 - p.bond_poisson_ratio) /
                        ((1.0 + p.bond_poisson_ratio) * (1.0 - 2.0 * p.bond_poisson_ratio));
     // Four corner bonds of A/4 each over l_ij = dynamics_cell_size: K = k_n A / l in parallel.
@@ -323,7 +333,8 @@ TEST_CASE("critical time step: a damped bonded block is stable just below it and
         p.bond_damping = zeta;
         p.damping_reading = DampingReading::criticalFraction;
         p.energy_growth_tolerance = 1e300;  // judge by the kinetic energy only
-        const VoronoiMesh mesh = test::boxBlockMesh(3, 3, 2, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation);
+        const VoronoiMesh mesh = test::boxBlockMesh(
+            3, 3, 2, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size}, dynamics_dilation);
         const CriticalTimeStep critical = DemModel(mesh, p).criticalTimeStep();
         INFO("zeta " << zeta << ": critical " << critical.bond << " s, omega " << critical.bond_frequency
                      << ", mode damping " << critical.bond_damping_ratio);

@@ -97,8 +97,8 @@ TEST_CASE("contact crushing caps each node at p_c A and crushes irreversibly", "
         }
     }
     REQUIRE(topNodes > 4);
-    CHECK(crushedTop == topNodes);      // the whole face crushes...
-    CHECK(largestElsewhere == 0.0);     // ...and nothing the plate does not touch
+    CHECK(crushedTop == topNodes);   // the whole face crushes...
+    CHECK(largestElsewhere == 0.0);  // ...and nothing the plate does not touch
     // Every top node at its cap: the plate carries exactly p_c over the face's area.
     CHECK(block.topFaceNodeArea() == Approx(blockSize * blockSize).epsilon(1e-12));
     CHECK(top.force.z == Approx(crushingPressure * blockSize * blockSize).epsilon(1e-9));
