@@ -40,6 +40,38 @@ std::vector<HalfSpace> distinctPlanes(const TriSurface& surface, double lengthSc
     return planes;
 }
 
+// Directions on the unit sphere: the vertices of an icosahedron whose triangles
+// are split in four `level` times and pushed out to the sphere (12, 42, 162, ...
+// points; neighbouring directions 63°, 32°, 16° apart).
+std::vector<Vec3> icosphereDirections(int level)
+{
+    const double t = 0.5 * (1 + std::sqrt(5.0));
+    std::vector<Vec3> v{{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                        {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& p : v) p = normalised(p);
+    std::vector<std::array<int, 3>> faces{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                          {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                          {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                          {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    for (int l = 0; l < level; ++l) {
+        std::map<std::pair<int, int>, int> middle;
+        auto mid = [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            const auto found = middle.find(key);
+            if (found != middle.end()) return found->second;
+            v.push_back(normalised(v[static_cast<std::size_t>(a)] + v[static_cast<std::size_t>(b)]));
+            return middle[key] = static_cast<int>(v.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> split;
+        for (const auto& f : faces) {
+            const int ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+            split.insert(split.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
+        }
+        faces = std::move(split);
+    }
+    return v;
+}
+
 }  // namespace
 
 ConvexHull convexHull(const std::vector<Vec3>& points)
@@ -101,6 +133,7 @@ ConvexHull generateRock(const RockShape& shape)
     if (!(shape.elongation > 0 && shape.elongation <= 1) || !(shape.flatness > 0 && shape.flatness <= 1))
         throw UserError("elongation (b/a) and flatness (c/b) must be in (0, 1]");
     if (shape.nPoints < 8) throw UserError("a generated rock needs at least 8 hull points");
+    if (!(shape.roundness >= 0 && shape.roundness < 1)) throw UserError("roundness must be in [0, 1)");
 
     SplitMix64 random(shape.seed);
     const double a = 1.0, b = shape.elongation, c = shape.elongation * shape.flatness;
@@ -116,6 +149,25 @@ ConvexHull generateRock(const RockShape& shape)
             {a * radius * rxy * std::cos(phi), b * radius * rxy * std::sin(phi), c * radius * z});
     }
     ConvexHull hull = convexHull(points);
+    if (shape.roundness > 0) {
+        // Rounded corners: the hull shrunk about its centroid by (1 - ρ), dilated by a
+        // ball of radius r = ρ R_in (a sphero-polyhedron, like the DEM's cells). Its
+        // inscribed radius about the centroid stays R_in and every corner and edge has
+        // radius r, so ρ = r / R_in is Wadell's roundness (corner radius over inscribed
+        // radius). The ball is the hull of icosphere directions (level 2, 16° apart).
+        const MassProperties core = massProperties(hull.surface);
+        double inradius = 1e300;
+        for (const auto& p : hull.planes)
+            inradius = std::min(inradius, p.offset - dot(p.normal, core.centroid));
+        const double r = shape.roundness * inradius;
+        const std::vector<Vec3> ball = icosphereDirections(2);
+        std::vector<Vec3> rounded;
+        rounded.reserve(hull.surface.points.size() * ball.size());
+        for (const auto& v : hull.surface.points)
+            for (const auto& u : ball)
+                rounded.push_back(core.centroid + (1 - shape.roundness) * (v - core.centroid) + r * u);
+        hull = convexHull(rounded);
+    }
     const MassProperties props = massProperties(hull.surface);
     const double scale = std::cbrt(shape.volume / props.volume);
     // Scale about the centroid and place the centroid at the origin.

@@ -38,31 +38,43 @@ MassProperties discProperties(double diameter, double thickness, const Vec3& cen
     return p;
 }
 
-// Rest a rock on its flattest side: largest principal extent along x, smallest
-// along z, centroid above the origin, lowest point on the plate z = 0.
-Mat3 restingRotation(const MassProperties& props)
+// Rest a rock as it lies on a plate under gravity, in its most stable position:
+// on the hull facet nearest to the centroid. For a convex body that facet always
+// holds the centroid's foot point, so the rock is in equilibrium on it and has
+// its lowest centre of mass there (a rock set down by hand in a single particle
+// breakage test settles the same way). Its outward normal becomes -z; in the
+// plate plane the longest principal direction is turned onto x.
+Mat3 restingRotation(const TriSurface& surface, const MassProperties& props)
 {
-    // Principal moments ascending: the axis of the smallest moment is the
-    // longest direction of the body, that of the largest the shortest one.
-    Mat3 R;
+    const std::vector<HalfSpace> planes = convexHull(surface.points).planes;
+    const HalfSpace* base = &planes.front();
+    for (const auto& p : planes)
+        if (-p.signedDistance(props.centroid) < -base->signedDistance(props.centroid)) base = &p;
+    const Vec3 ez = -1.0 * base->normal;
+    // Principal moments ascending: the axis of the smallest moment is the longest
+    // direction of the body; if it stands on the base, the next one.
+    Vec3 ex;
     for (int j = 0; j < 3; ++j) {
-        R(0, j) = props.principalAxes(j, 0);
-        R(1, j) = props.principalAxes(j, 1);
-        R(2, j) = props.principalAxes(j, 2);
+        const Vec3 a{props.principalAxes(0, j), props.principalAxes(1, j), props.principalAxes(2, j)};
+        ex = a - dot(a, ez) * ez;
+        if (norm(ex) > 0.3) break;
     }
-    // Keep it a proper rotation (det = +1).
-    const Vec3 r0{R(0, 0), R(0, 1), R(0, 2)}, r1{R(1, 0), R(1, 1), R(1, 2)};
-    const Vec3 r2 = cross(r0, r1);
-    R(2, 0) = r2.x;
-    R(2, 1) = r2.y;
-    R(2, 2) = r2.z;
+    ex = normalised(ex);
+    const Vec3 ey = cross(ez, ex);
+    Mat3 R;
+    const Vec3 rows[3] = {ex, ey, ez};
+    for (int i = 0; i < 3; ++i) {
+        R(i, 0) = rows[i].x;
+        R(i, 1) = rows[i].y;
+        R(i, 2) = rows[i].z;
+    }
     return R;
 }
 
 void placeOnPlate(TriSurface& surface, std::optional<TriSurface>& scan)
 {
     const MassProperties props = massProperties(surface);
-    const Mat3 R = restingRotation(props);
+    const Mat3 R = restingRotation(surface, props);
     transformSurface(surface, 1.0, R, -(R * props.centroid));
     if (scan) transformSurface(*scan, 1.0, R, -(R * props.centroid));
     double zMin = 1e300;
@@ -142,6 +154,7 @@ Specimen buildGenerated(const Dictionary& d)
     shape.flatness = d.getScalarOrDefault("flatness", shape.flatness, Bounds::open(0, 1.000001));
     shape.roughness = d.getScalarOrDefault("roughness", shape.roughness, Bounds::closedOpen(0, 1));
     shape.nPoints = d.getOrDefault<int>("nPoints", shape.nPoints);
+    shape.roundness = d.getScalarOrDefault("roundness", shape.roundness, Bounds::closedOpen(0, 0.9));
     shape.seed = d.get<std::uint64_t>("seed");
     Specimen s = fromHull(generateRock(shape), "generated");
     std::optional<TriSurface> noScan;

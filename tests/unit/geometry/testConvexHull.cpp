@@ -1,7 +1,11 @@
 // Convex hulls and generated rocks.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <map>
 
+#include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "geometry/convexHull.hpp"
 #include "geometry/specimen.hpp"
@@ -53,4 +57,120 @@ TEST_CASE("generated rocks have the requested volume and are reproducible", "[ge
     shape.seed = 102;
     const ConvexHull c = generateRock(shape);
     CHECK_FALSE(c.surface.points[0] == a.surface.points[0]);
+}
+
+namespace {
+
+// The points of the surface on the plate z = 0 and whether (0, 0), the
+// centroid's foot, lies inside their convex hull in the plate plane.
+struct Seat {
+    std::vector<Vec3> onPlate;
+    bool centroidInside = false;
+};
+
+Seat seatOnPlate(const TriSurface& surface, double tolerance)
+{
+    Seat seat;
+    for (const auto& p : surface.points)
+        if (std::abs(p.z) < tolerance) seat.onPlate.push_back(p);
+    // (0, 0) is inside the 2D hull when it is inside some triangle of the points.
+    const auto& q = seat.onPlate;
+    for (std::size_t i = 0; i < q.size() && !seat.centroidInside; ++i)
+        for (std::size_t j = i + 1; j < q.size() && !seat.centroidInside; ++j)
+            for (std::size_t k = j + 1; k < q.size() && !seat.centroidInside; ++k) {
+                auto side = [](const Vec3& a, const Vec3& b) { return a.x * b.y - a.y * b.x; };
+                const double s1 = side(q[i], q[j]), s2 = side(q[j], q[k]), s3 = side(q[k], q[i]);
+                seat.centroidInside = (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
+            }
+    return seat;
+}
+
+}  // namespace
+
+TEST_CASE("a placed rock rests on its hull facet nearest to the centroid, in equilibrium", "[geometry]")
+{
+    // Every SPB rock of the tutorials: seated on a facet (three or more points on
+    // the plate), the centroid above that facet, and no facet plane nearer to the
+    // centroid (the most stable seat). Before 2026-12-02 the rocks were only turned
+    // by their principal axes and touched the plate at one corner.
+    for (std::uint64_t seed : {101u, 102u, 103u, 104u, 105u, 106u, 107u}) {
+        const std::string text =
+            "geometry generated; generated { volume 60e-6; elongation 0.8; flatness 0.7; seed " +
+            std::to_string(seed) + "; placeOnPlate yes; }";
+        const Specimen s = buildSpecimen(Dictionary::parse(text, "meshRockDict"), ".");
+        CAPTURE(seed);
+        const Seat seat = seatOnPlate(s.surface, 1e-12);
+        CHECK(seat.onPlate.size() >= 3);
+        CHECK(seat.centroidInside);
+        CHECK(s.properties.centroid.x == Approx(0).margin(1e-12));
+        CHECK(s.properties.centroid.y == Approx(0).margin(1e-12));
+        for (const auto& p : s.planes)
+            CHECK(-p.signedDistance(s.properties.centroid) >= s.properties.centroid.z - 1e-12);
+        // Lying flat: the height is the smallest of the three extents.
+        const Vec3 extent = s.properties.boundsMax - s.properties.boundsMin;
+        CHECK(extent.z < extent.x);
+        CHECK(extent.z < extent.y);
+    }
+}
+
+TEST_CASE("a tilted brick scan is set down on its largest face", "[geometry]")
+{
+    // A 40 x 20 x 10 mm brick, turned by odd angles: it must lie on a 40 x 20 face
+    // with its long side along x.
+    TriSurface brick;
+    for (int i = 0; i < 8; ++i)
+        brick.points.push_back({40.0 * (i & 1), 20.0 * ((i >> 1) & 1), 10.0 * ((i >> 2) & 1)});
+    brick.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                       {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rockfrac-brick-test";
+    std::filesystem::create_directories(dir);
+    writeStl(dir / "brick.stl", brick, "brick");
+    const std::string text =
+        "geometry stl; stl { file \"brick.stl\"; scale 1e-3; rotate (17 -31 52); placeOnPlate yes; }";
+    const Specimen s = buildSpecimen(Dictionary::parse(text, "meshRockDict"), dir);
+    const Vec3 extent = s.properties.boundsMax - s.properties.boundsMin;
+    CHECK(extent.x == Approx(40e-3).epsilon(1e-9));
+    CHECK(extent.y == Approx(20e-3).epsilon(1e-9));
+    CHECK(extent.z == Approx(10e-3).epsilon(1e-9));
+    CHECK(s.properties.boundsMin.z == Approx(0).margin(1e-15));
+    CHECK(seatOnPlate(s.surface, 1e-12).onPlate.size() == 4);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("rounded rocks: corner radius = roundness x inscribed radius, volume exact", "[geometry]")
+{
+    RockShape shape;
+    shape.volume = 45e-6;
+    shape.elongation = 0.85;
+    shape.flatness = 0.65;
+    shape.seed = 103;
+    const ConvexHull sharp = generateRock(shape);
+    shape.roundness = 0.3;
+    const ConvexHull round = generateRock(shape);
+    CHECK(massProperties(round.surface).volume == Approx(45e-6).epsilon(1e-12));
+    CHECK(checkSurface(round.surface).watertight());
+    // A sphero-polyhedron has no facet angle sharper than the ball's sampling:
+    // neighbouring facet normals differ by at most the icosphere spacing (~16°),
+    // while the sharp hull has edges of 40° and more.
+    auto sharpestEdge = [](const TriSurface& s) {
+        std::map<std::pair<int, int>, Vec3> firstNormal;
+        double worst = 0;
+        for (const auto& t : s.triangles) {
+            const Vec3 n =
+                normalised(cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]));
+            for (int e = 0; e < 3; ++e) {
+                const auto key = std::minmax(t[e], t[(e + 1) % 3]);
+                const auto found = firstNormal.find(key);
+                if (found == firstNormal.end())
+                    firstNormal.emplace(key, n);
+                else
+                    worst = std::max(worst, std::acos(std::clamp(dot(n, found->second), -1.0, 1.0)));
+            }
+        }
+        return worst * 180 / M_PI;
+    };
+    CHECK(sharpestEdge(sharp.surface) > 40);
+    CHECK(sharpestEdge(round.surface) < 20);
+    shape.roundness = 1.0;
+    CHECK_THROWS_AS(generateRock(shape), UserError);
 }
