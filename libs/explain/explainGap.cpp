@@ -502,6 +502,28 @@ ExplainOutcome Analysis::execute()
                 from.runs = evaluate(from.values, "fit-" + se.name + "-0");
                 from.model = from.runs.summary();
                 from.chi = chiCal(from.model);
+                if (from.chi >= baseline.chi) {
+                    // The linearised size did not lower chi-square: the effect acts past a
+                    // threshold (plates that let the rock slide only below some friction) or
+                    // bends strongly, where the secant at the case's value sees nothing useful.
+                    // Start the refit from the best of a coarse scan of its range instead.
+                    const std::size_t j = static_cast<std::size_t>(nb_ + e);
+                    const double low = run_.parameters[j].low, high = run_.parameters[j].high;
+                    int k = 0;
+                    for (double fraction : {0.05, 0.3, 0.55, 0.8}) {
+                        Fit trial = baseline;
+                        trial.values[j] = low + fraction * (high - low);
+                        trial.values = clip(trial.values);
+                        trial.runs = evaluate(trial.values, "fit-" + se.name + "-scan" + std::to_string(++k));
+                        trial.model = trial.runs.summary();
+                        trial.chi = chiCal(trial.model);
+                        if (trial.chi < from.chi) from = std::move(trial);
+                    }
+                    say("  refit " + se.name +
+                        ": the linearised start did not lower chi-square; starting from " +
+                        describeParameter(nb_ + e, from.values[j]) +
+                        " (best of a 4-point scan of its range, chi-square " + format(from.chi, 4) + ")");
+                }
                 fit = refit(free, from, "fit-" + se.name, &baseline);
             } catch (const UserError& error) {
                 say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
