@@ -117,6 +117,13 @@ bool StateFile::has(const std::string& name) const
     return doubles_.count(name) || integers_.count(name) || bytes_.count(name);
 }
 
+void StateFile::erase(const std::string& name)
+{
+    doubles_.erase(name);
+    integers_.erase(name);
+    bytes_.erase(name);
+}
+
 void StateFile::missing(const std::string& name, const char* kind) const
 {
     throw UserError(source_.string() + ": no " + kind + " array '" + name +

@@ -36,6 +36,8 @@ public:
     std::vector<Vec3> vectors(const std::string& name, long expectedCount = -1) const;
     double scalar(const std::string& name) const { return doubles(name, 1)[0]; }
     bool has(const std::string& name) const;
+    // Drops an array (e.g. to make the file an older writer would have written).
+    void erase(const std::string& name);
 
     void write(const std::filesystem::path& file) const;  // atomically
     static StateFile read(const std::filesystem::path& file);

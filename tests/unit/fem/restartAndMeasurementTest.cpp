@@ -2,10 +2,13 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstring>
+#include <filesystem>
 
 #include "core/error.hpp"
 #include "fem/measurements.hpp"
+#include "femCase/femCase.hpp"
 #include "femTestSupport.hpp"
+#include "io/stateFile.hpp"
 
 using namespace rockfrac;
 using namespace rockfrac::fem;
@@ -70,6 +73,46 @@ TEST_CASE("a restarted model continues bit for bit", "[fem][restart]")
     double deepest = 0.0;
     for (double c : original.plate(1).crushedDepth) deepest = std::max(deepest, c);
     CHECK((deepest > 0.0) == (crushingPressure > 0.0));  // the crushing path was exercised
+}
+
+TEST_CASE("a state file written before contact crushing existed restarts with no crushed depths",
+          "[fem][restart]")
+{
+    test::GmshSession gmshSession;
+    const double size = 0.01;
+    const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.25 * size);
+    FemModel original(mesh, crushingParameters(20e6));
+    addCrushingPlates(original, size);
+    const double dt = original.stableTimeStep();
+    for (int i = 0; i < 200; ++i) REQUIRE(original.step(dt).ok);
+    double deepest = 0.0;
+    for (double c : original.plate(1).crushedDepth) deepest = std::max(deepest, c);
+    REQUIRE(deepest > 0.0);
+
+    const auto dir = std::filesystem::temp_directory_path() / "rockfrac-old-femState-test";
+    std::filesystem::create_directories(dir);
+    FemRunState run;
+    run.step = 200;
+    writeFemState(dir / "femState", original, run);
+    // The same file as the writer before 2026-12-02: no plateK.crushedDepth arrays.
+    StateFile old = StateFile::read(dir / "femState");
+    REQUIRE(old.has("plate1.crushedDepth"));
+    old.erase("plate0.crushedDepth");
+    old.erase("plate1.crushedDepth");
+    old.write(dir / "femStateOld");
+
+    FemModel fromOld(mesh, crushingParameters(20e6));
+    addCrushingPlates(fromOld, size);
+    CHECK(readFemState(dir / "femStateOld", fromOld).step == 200);
+    CHECK(fromOld.state().displacements == original.state().displacements);
+    for (int k = 0; k < 2; ++k)
+        for (double c : fromOld.plate(k).crushedDepth) CHECK(c == 0.0);
+
+    FemModel fromNew(mesh, crushingParameters(20e6));
+    addCrushingPlates(fromNew, size);
+    readFemState(dir / "femState", fromNew);
+    CHECK(fromNew.plate(1).crushedDepth == original.plate(1).crushedDepth);
+    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("the virtual extensometer reads the strain along its axis times its length", "[fem][measure]")
