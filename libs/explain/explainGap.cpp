@@ -502,29 +502,66 @@ ExplainOutcome Analysis::execute()
                 from.runs = evaluate(from.values, "fit-" + se.name + "-0");
                 from.model = from.runs.summary();
                 from.chi = chiCal(from.model);
+                const Fit* previous = &baseline;
+                std::vector<Fit> tried;  // the scan's points, when there is a scan
                 if (from.chi >= baseline.chi) {
                     // The linearised size did not lower chi-square: the effect acts past a
                     // threshold (plates that let the rock slide only below some friction) or
                     // bends strongly, where the secant at the case's value sees nothing useful.
-                    // Start the refit from the best of a coarse scan of its range instead.
+                    // Scan its range (fractions 0.05, 0.3, 0.55, 0.8), then halve the distance
+                    // from the best point to each neighbour once, and start the refit there,
+                    // with the nearest scanned point as the secant partner of its sensitivities.
                     const std::size_t j = static_cast<std::size_t>(nb_ + e);
                     const double low = run_.parameters[j].low, high = run_.parameters[j].high;
                     int k = 0;
-                    for (double fraction : {0.05, 0.3, 0.55, 0.8}) {
+                    auto tryValue = [&](double value) {
                         Fit trial = baseline;
-                        trial.values[j] = low + fraction * (high - low);
+                        trial.values[j] = value;
                         trial.values = clip(trial.values);
-                        trial.runs = evaluate(trial.values, "fit-" + se.name + "-scan" + std::to_string(++k));
+                        const std::string name = "fit-" + se.name + "-scan" + std::to_string(++k);
+                        try {
+                            trial.runs = evaluate(trial.values, name);
+                        } catch (const UserError& error) {
+                            say("  refit " + se.name + ": scan point " + describeParameter(nb_ + e, value) +
+                                " left out, its runs failed: " + error.what());
+                            return;
+                        }
                         trial.model = trial.runs.summary();
                         trial.chi = chiCal(trial.model);
-                        if (trial.chi < from.chi) from = std::move(trial);
-                    }
+                        tried.push_back(std::move(trial));
+                    };
+                    for (double fraction : {0.05, 0.3, 0.55, 0.8}) tryValue(low + fraction * (high - low));
+                    tried.push_back(from);
+                    tried.push_back(baseline);
+                    auto byValue = [j](const Fit& a, const Fit& b) { return a.values[j] < b.values[j]; };
+                    auto bestOf = [&]() {
+                        std::sort(tried.begin(), tried.end(), byValue);
+                        std::size_t b = 0;
+                        for (std::size_t i = 1; i < tried.size(); ++i)
+                            if (tried[i].chi < tried[b].chi) b = i;
+                        return b;
+                    };
+                    std::size_t best = bestOf();
+                    const double bestValue = tried[best].values[j];
+                    const double left = best > 0 ? tried[best - 1].values[j] : low;
+                    const double right = best + 1 < tried.size() ? tried[best + 1].values[j] : high;
+                    if (left < bestValue) tryValue(0.5 * (left + bestValue));
+                    if (right > bestValue) tryValue(0.5 * (bestValue + right));
+                    best = bestOf();
+                    from = tried[best];
+                    // The nearest other point: a local secant, not one across the threshold.
+                    std::size_t partner = best > 0 ? best - 1 : best + 1;
+                    if (best > 0 && best + 1 < tried.size() &&
+                        tried[best + 1].values[j] - tried[best].values[j] <
+                            tried[best].values[j] - tried[best - 1].values[j])
+                        partner = best + 1;
+                    if (partner < tried.size() && partner != best) previous = &tried[partner];
                     say("  refit " + se.name +
                         ": the linearised start did not lower chi-square; starting from " +
-                        describeParameter(nb_ + e, from.values[j]) +
-                        " (best of a 4-point scan of its range, chi-square " + format(from.chi, 4) + ")");
+                        describeParameter(nb_ + e, from.values[j]) + " (best of a " + std::to_string(k) +
+                        "-point scan of its range, chi-square " + format(from.chi, 4) + ")");
                 }
-                fit = refit(free, from, "fit-" + se.name, &baseline);
+                fit = refit(free, from, "fit-" + se.name, previous);
             } catch (const UserError& error) {
                 say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
                 continue;

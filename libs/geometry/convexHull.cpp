@@ -134,6 +134,9 @@ ConvexHull generateRock(const RockShape& shape)
         throw UserError("elongation (b/a) and flatness (c/b) must be in (0, 1]");
     if (shape.nPoints < 8) throw UserError("a generated rock needs at least 8 hull points");
     if (!(shape.roundness >= 0 && shape.roundness < 1)) throw UserError("roundness must be in [0, 1)");
+    if (shape.roundness > 0 && shape.roundness < 0.01)
+        throw UserError("roundness " + std::to_string(shape.roundness) +
+                        " is below 0.01: use 0 for a sharp hull (a tiny radius only multiplies the facets)");
 
     SplitMix64 random(shape.seed);
     const double a = 1.0, b = shape.elongation, c = shape.elongation * shape.flatness;

@@ -73,6 +73,8 @@ Mat3 restingRotation(const TriSurface& surface, const MassProperties& props)
 
 void placeOnPlate(TriSurface& surface, std::optional<TriSurface>& scan)
 {
+    // The hull's centroid, not a scan's: both solvers fill the convex hull (as the paper did),
+    // so the hull is the body that has to rest in equilibrium.
     const MassProperties props = massProperties(surface);
     const Mat3 R = restingRotation(surface, props);
     transformSurface(surface, 1.0, R, -(R * props.centroid));

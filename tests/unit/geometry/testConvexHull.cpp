@@ -1,4 +1,6 @@
 // Convex hulls and generated rocks.
+#include <unistd.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -89,14 +91,23 @@ Seat seatOnPlate(const TriSurface& surface, double tolerance)
 
 TEST_CASE("a placed rock rests on its hull facet nearest to the centroid, in equilibrium", "[geometry]")
 {
-    // Every SPB rock of the tutorials: seated on a facet (three or more points on
-    // the plate), the centroid above that facet, and no facet plane nearer to the
-    // centroid (the most stable seat). Before 2026-12-02 the rocks were only turned
-    // by their principal axes and touched the plate at one corner.
-    for (std::uint64_t seed : {101u, 102u, 103u, 104u, 105u, 106u, 107u}) {
-        const std::string text =
-            "geometry generated; generated { volume 60e-6; elongation 0.8; flatness 0.7; seed " +
-            std::to_string(seed) + "; placeOnPlate yes; }";
+    // The seven granite rocks of tutorials/SPB/granite*/rocks: seated on a facet (three
+    // or more points on the plate), the centroid above that facet, and no facet plane
+    // nearer to the centroid (the most stable seat). Before 2026-12-02 the rocks were
+    // only turned by their principal axes and touched the plate at one corner.
+    struct Rock {
+        double volume, elongation, flatness;
+        int seed;
+    };
+    for (const Rock& rock :
+         {Rock{82.7e-6, 0.78, 0.70, 101}, Rock{68.6e-6, 0.70, 0.80, 102}, Rock{45.3e-6, 0.85, 0.65, 103},
+          Rock{74.6e-6, 0.66, 0.75, 104}, Rock{46.4e-6, 0.80, 0.78, 105}, Rock{81.8e-6, 0.74, 0.62, 106},
+          Rock{43.6e-6, 0.88, 0.72, 107}}) {
+        const int seed = rock.seed;
+        const std::string text = "geometry generated; generated { volume " + std::to_string(rock.volume) +
+                                 "; elongation " + std::to_string(rock.elongation) + "; flatness " +
+                                 std::to_string(rock.flatness) + "; seed " + std::to_string(seed) +
+                                 "; placeOnPlate yes; }";
         const Specimen s = buildSpecimen(Dictionary::parse(text, "meshRockDict"), ".");
         CAPTURE(seed);
         const Seat seat = seatOnPlate(s.surface, 1e-12);
@@ -113,28 +124,43 @@ TEST_CASE("a placed rock rests on its hull facet nearest to the centroid, in equ
     }
 }
 
-TEST_CASE("a tilted brick scan is set down on its largest face", "[geometry]")
+TEST_CASE("a tilted concave scan: its hull is seated and the scan moves with it", "[geometry]")
 {
-    // A 40 x 20 x 10 mm brick, turned by odd angles: it must lie on a 40 x 20 face
-    // with its long side along x.
-    TriSurface brick;
-    for (int i = 0; i < 8; ++i)
-        brick.points.push_back({40.0 * (i & 1), 20.0 * ((i >> 1) & 1), 10.0 * ((i >> 2) & 1)});
-    brick.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                       {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rockfrac-brick-test";
+    // An L-shaped block (40 x 30 mm L, 15 mm thick), turned by odd angles. Both solvers
+    // fill the convex hull, so the hull must rest on a facet in equilibrium; the scan is
+    // carried along by the same motion, inside the hull and touching the plate.
+    const double L[6][2] = {{0, 0}, {40, 0}, {40, 10}, {10, 10}, {10, 30}, {0, 30}};  // counter-clockwise
+    TriSurface block;
+    for (int k = 0; k < 2; ++k)
+        for (const auto& p : L) block.points.push_back({p[0], p[1], 15.0 * k});
+    block.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 5, 3},  {3, 5, 4},     // bottom, seen from below
+                       {6, 7, 8}, {6, 8, 9}, {6, 9, 11}, {9, 10, 11}};  // top
+    for (int i = 0; i < 6; ++i) {
+        const int j = (i + 1) % 6;
+        block.triangles.push_back({i, j, j + 6});
+        block.triangles.push_back({i, j + 6, i + 6});
+    }
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("rockfrac-lblock-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    writeStl(dir / "brick.stl", brick, "brick");
+    writeStl(dir / "block.stl", block, "block");
     const std::string text =
-        "geometry stl; stl { file \"brick.stl\"; scale 1e-3; rotate (17 -31 52); placeOnPlate yes; }";
+        "geometry stl; stl { file \"block.stl\"; scale 1e-3; rotate (17 -31 52); placeOnPlate yes; }";
     const Specimen s = buildSpecimen(Dictionary::parse(text, "meshRockDict"), dir);
-    const Vec3 extent = s.properties.boundsMax - s.properties.boundsMin;
-    CHECK(extent.x == Approx(40e-3).epsilon(1e-9));
-    CHECK(extent.y == Approx(20e-3).epsilon(1e-9));
-    CHECK(extent.z == Approx(10e-3).epsilon(1e-9));
-    CHECK(s.properties.boundsMin.z == Approx(0).margin(1e-15));
-    CHECK(seatOnPlate(s.surface, 1e-12).onPlate.size() == 4);
     std::filesystem::remove_all(dir);
+    REQUIRE(s.scan);
+    const Seat seat = seatOnPlate(s.surface, 1e-12);
+    CHECK(seat.onPlate.size() >= 3);
+    CHECK(seat.centroidInside);
+    for (const auto& p : s.planes)
+        CHECK(-p.signedDistance(s.properties.centroid) >= s.properties.centroid.z - 1e-12);
+    double scanLowest = 1e300;
+    for (const auto& p : s.scan->points) {
+        scanLowest = std::min(scanLowest, p.z);
+        for (const auto& h : s.planes) CHECK(h.signedDistance(p) <= 1e-12);  // inside its hull
+    }
+    CHECK(scanLowest == Approx(0).margin(1e-12));
+    CHECK(massProperties(*s.scan).volume == Approx((40 * 10 + 10 * 20) * 15e-9).epsilon(1e-9));
 }
 
 TEST_CASE("rounded rocks: corner radius = roundness x inscribed radius, volume exact", "[geometry]")
