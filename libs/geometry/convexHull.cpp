@@ -42,7 +42,7 @@ std::vector<HalfSpace> distinctPlanes(const TriSurface& surface, double lengthSc
 
 // Directions on the unit sphere: the vertices of an icosahedron whose triangles
 // are split in four `level` times and pushed out to the sphere (12, 42, 162, ...
-// points; neighbouring directions 63°, 32°, 16° apart).
+// points; at level 2 neighbouring directions are 15.9–18.7° apart).
 std::vector<Vec3> icosphereDirections(int level)
 {
     const double t = 0.5 * (1 + std::sqrt(5.0));
@@ -155,9 +155,9 @@ ConvexHull generateRock(const RockShape& shape)
     if (shape.roundness > 0) {
         // Rounded corners: the hull shrunk about its centroid by (1 - ρ), dilated by a
         // ball of radius r = ρ R_in (a sphero-polyhedron, like the DEM's cells). Its
-        // inscribed radius about the centroid stays R_in and every corner and edge has
-        // radius r, so ρ = r / R_in is Wadell's roundness (corner radius over inscribed
-        // radius). The ball is the hull of icosphere directions (level 2, 16° apart).
+        // inscribed radius about the centroid stays R_in (to 1.8 % of r: the ball is the
+        // hull of 162 icosphere directions) and every corner and edge has radius r, so ρ
+        // approximates Wadell's roundness (corner radius over inscribed radius).
         const MassProperties core = massProperties(hull.surface);
         double inradius = 1e300;
         for (const auto& p : hull.planes)

@@ -1,8 +1,11 @@
 // Restart continuity, the virtual extensometer and the failure-load detector.
+#include <unistd.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include "core/error.hpp"
 #include "fem/measurements.hpp"
@@ -89,7 +92,8 @@ TEST_CASE("a state file written before contact crushing existed restarts with no
     for (double c : original.plate(1).crushedDepth) deepest = std::max(deepest, c);
     REQUIRE(deepest > 0.0);
 
-    const auto dir = std::filesystem::temp_directory_path() / "rockfrac-old-femState-test";
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("rockfrac-old-femState-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     FemRunState run;
     run.step = 200;

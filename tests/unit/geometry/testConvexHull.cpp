@@ -163,7 +163,7 @@ TEST_CASE("a tilted concave scan: its hull is seated and the scan moves with it"
     CHECK(massProperties(*s.scan).volume == Approx((40 * 10 + 10 * 20) * 15e-9).epsilon(1e-9));
 }
 
-TEST_CASE("rounded rocks: corner radius = roundness x inscribed radius, volume exact", "[geometry]")
+TEST_CASE("rounded rocks: no sharp facet edges, volume exact, roundness range checked", "[geometry]")
 {
     RockShape shape;
     shape.volume = 45e-6;
@@ -176,7 +176,7 @@ TEST_CASE("rounded rocks: corner radius = roundness x inscribed radius, volume e
     CHECK(massProperties(round.surface).volume == Approx(45e-6).epsilon(1e-12));
     CHECK(checkSurface(round.surface).watertight());
     // A sphero-polyhedron has no facet angle sharper than the ball's sampling:
-    // neighbouring facet normals differ by at most the icosphere spacing (~16°),
+    // neighbouring facet normals differ by at most the icosphere spacing (< 18.7°),
     // while the sharp hull has edges of 40° and more.
     auto sharpestEdge = [](const TriSurface& s) {
         std::map<std::pair<int, int>, Vec3> firstNormal;
