@@ -355,7 +355,14 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
                                      ? beta
                                      : 2.0 * beta * std::sqrt(reduced_mass / stiffness));
-        if (!f.strength_scale.empty()) f.strength_scale.push_back(1.0);
+        // The optional Weibull size effect: a larger interface is weaker (weakest link).
+        const double size_factor =
+            parameters_.bondSizeFactor(head.area * static_cast<double>(last - head_index));
+        // (An empty array means 1 everywhere: it is filled at the first factor that is not 1.)
+        if (!f.strength_scale.empty() || size_factor != 1.0) {
+            f.strength_scale.resize(f.cell_i.size() - 1, 1.0);
+            f.strength_scale.push_back(size_factor);
+        }
         f.softening_slot.push_back(-1);
         for (std::size_t e = head_index; e < last; ++e) {
             const int bond = order[e];

@@ -41,6 +41,12 @@ void requireRange(double value, double low, double high, const char* name)
 
 }  // namespace
 
+double DemParameters::bondSizeFactor(double interface_area) const
+{
+    if (!(bond_size_effect_modulus > 0.0)) return 1.0;
+    return std::pow(bond_size_effect_reference_area / interface_area, 1.0 / bond_size_effect_modulus);
+}
+
 void DemParameters::validate() const
 {
     requirePositive(rock_youngs_modulus, "rock Young's modulus");
@@ -56,6 +62,9 @@ void DemParameters::validate() const
     requirePositive(bk_exponent, "Benzeggagh-Kenane exponent");
     requireRange(bond_damping, 0.0, 1e3, "bond damping coefficient");
     requireRange(rupture_tolerance, 0.0, 1.0, "rupture tolerance");
+    requireRange(bond_size_effect_modulus, 0.0, 1e3, "Weibull modulus of the bond size effect");
+    if (bond_size_effect_modulus > 0.0)
+        requirePositive(bond_size_effect_reference_area, "reference area of the bond size effect");
     requireRange(rock_rock_friction, 0.0, 1e3, "rock-rock friction");
     requireRange(rock_steel_friction, 0.0, 1e3, "rock-steel friction");
     requireRange(rock_rock_restitution, 1e-6, 1.0, "rock-rock restitution");

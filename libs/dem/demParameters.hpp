@@ -42,6 +42,14 @@ struct DemParameters {
     DampingReading damping_reading = DampingReading::absolute;
     // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
     double rupture_tolerance = 1e-6;  // [-], relative to d_e0
+    // Weibull size effect of the bond strength (docs/theory-dem.md §3, an option beyond the
+    // paper): sigma-bar and C of an interface of area A are scaled by (A_ref / A)^(1/m), the
+    // weakest-link scaling the FEM applies to its elements, so that a mesh of larger cells
+    // is not stronger than the one the bonds were calibrated on. m = 0: off (the paper's model).
+    double bond_size_effect_modulus = 0.0;         // m [-]
+    double bond_size_effect_reference_area = 0.0;  // A_ref [m^2]
+    // The factor on an interface of area A [m^2] (1 when off).
+    double bondSizeFactor(double interface_area) const;
 
     // Contacts (Hertz–Mindlin, Table 2).
     std::string contact_law = "hertzMindlin";

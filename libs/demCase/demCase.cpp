@@ -41,6 +41,13 @@ DemParameters readDemParameters(const Dictionary& d)
     p.fracture_energy_mode_I = bond.getScalar("GI", Bounds::positive(), &energyPerArea);
     p.fracture_energy_mode_II = bond.getScalar("GII", Bounds::positive(), &energyPerArea);
     p.bk_exponent = bond.getScalarOrDefault("bkExponent", p.bk_exponent, Bounds::positive());
+    if (bond.found("sizeEffect")) {
+        // Optional: the Weibull size effect of the bond strength (off when absent).
+        static const Dimensions area = Dimensions::fromUnits("m^2");
+        const Dictionary& size = bond.subDict("sizeEffect");
+        p.bond_size_effect_modulus = size.getScalar("weibullModulus", Bounds::positive());
+        p.bond_size_effect_reference_area = size.getScalar("referenceArea", Bounds::positive(), &area);
+    }
     const Dictionary& damping = bond.subDict("damping");
     p.damping_reading = dampingReadingFromName(damping.getWord("reading", {"absolute", "criticalFraction"}));
     p.bond_damping = damping.getScalar("beta", Bounds::nonNegative());

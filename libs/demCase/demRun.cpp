@@ -1,5 +1,6 @@
 #include "demCase/demRun.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -270,6 +271,39 @@ struct BondedDemRun::Impl {
 BondedDemRun::BondedDemRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
 BondedDemRun::~BondedDemRun() = default;
 
+// The interfaces' areas and, when the bond size effect is on, its factors and the
+// reference area that would leave this mesh's mean factor at 1 (the value to give for
+// the mesh the bonds were calibrated on).
+static void printBondSizeEffect(const InterfaceArrays& faces, const DemParameters& p)
+{
+    if (faces.size() == 0) return;
+    const double m = p.bond_size_effect_modulus > 0.0 ? p.bond_size_effect_modulus : 7.0;
+    double areaSum = 0.0, powerSum = 0.0, factorSum = 0.0, factorMin = 1e300, factorMax = 0.0;
+    for (int k = 0; k < faces.size(); ++k) {
+        const double area = faces.bond_area[k] * (faces.bond_offset[k + 1] - faces.bond_offset[k]);
+        areaSum += area;
+        powerSum += std::pow(area, -1.0 / m);
+        const double factor = p.bondSizeFactor(area);
+        factorSum += factor;
+        factorMin = std::min(factorMin, factor);
+        factorMax = std::max(factorMax, factor);
+    }
+    const double n = faces.size();
+    const double neutral = std::pow(powerSum / n, -m);
+    if (!(p.bond_size_effect_modulus > 0.0)) {
+        std::printf(
+            "Interfaces: %d, mean area %.4g mm^2 (bond size effect off; with m = 7 the reference area "
+            "%.4g mm^2 would leave this mesh's mean strength factor at 1)\n",
+            faces.size(), 1e6 * areaSum / n, 1e6 * neutral);
+        return;
+    }
+    std::printf(
+        "Interfaces: %d, mean area %.4g mm^2; bond size effect (A_ref/A)^(1/m), m %.3g, A_ref %.4g mm^2: "
+        "strength factors %.3f-%.3f, mean %.4f (mean 1 at A_ref %.4g mm^2)\n",
+        faces.size(), 1e6 * areaSum / n, m, 1e6 * p.bond_size_effect_reference_area, factorMin, factorMax,
+        factorSum / n, 1e6 * neutral);
+}
+
 void BondedDemRun::printSetup() const
 {
     const Impl& r = *impl_;
@@ -285,6 +319,7 @@ void BondedDemRun::printSetup() const
         1e-6 * r.parameters.bond_tensile_strength, 1e-6 * r.parameters.bond_cohesion,
         r.parameters.bond_friction, r.parameters.fracture_energy_mode_I,
         dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
+    printBondSizeEffect(r.model->interfaces(), r.parameters);
     std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n",
                 r.time.deltaT(), r.time.deltaT() / r.rayleighStep, r.rayleighStep, r.time.endTime(),
                 r.time.endStep());

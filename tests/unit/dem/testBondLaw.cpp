@@ -106,6 +106,44 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
     CHECK(bond.model.cellDamage()[0] == 1.0);
 }
 
+TEST_CASE("bond size effect: an interface of area A opens at sigma-bar (A_ref/A)^(1/m), and shears at C x it",
+          "[dem][bond][sizeEffect]")
+{
+    // The one-bond mesh keeps a single bond of the face: its interface area is A/n.
+    DemParameters p = quietParameters();
+    p.bond_size_effect_modulus = 7.0;
+    p.bond_size_effect_reference_area = 4.0 * bond_area;  // this interface is 4 x smaller: stronger
+    const double factor = std::pow(4.0, 1.0 / 7.0);
+    CHECK(p.bondSizeFactor(bond_area) == Approx(factor).epsilon(1e-14));
+    CHECK(p.bondSizeFactor(4.0 * bond_area) == 1.0);
+    const double kn = normalModulus(p), kt = shearModulus(p);
+    for (const Vec3 direction : {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}}) {
+        // Opening (tension, onset at sigma-bar) or sliding (pure shear, onset at C).
+        const bool tension = direction.x > 0.0;
+        const double expected = factor * (tension ? p.bond_tensile_strength : p.bond_cohesion);
+        const double step = 1e-4 * expected * reference_length / (tension ? kn : kt);
+        ImposedBond bond(p);
+        REQUIRE(bond.model.interfaces().strength_scale.size() == 1);
+        CHECK(bond.model.interfaces().strength_scale[0] == Approx(factor).epsilon(1e-14));
+        double d = 0.0;
+        while (bond.bonds().stage[0] == bondElastic &&
+               d < 2.0 * expected * reference_length / (tension ? kn : kt)) {
+            d += step;
+            bond.forceAt(d * direction);
+        }
+        INFO((tension ? "tension" : "shear"));
+        REQUIRE(bond.bonds().stage[0] != bondElastic);
+        CHECK(bond.bonds().onset_stress[0] == Approx(expected).epsilon(2e-3));
+    }
+    // Off (m = 0): the paper's model exactly; a reference area is then not needed.
+    p.bond_size_effect_modulus = 0.0;
+    p.bond_size_effect_reference_area = 0.0;
+    CHECK(p.bondSizeFactor(bond_area) == 1.0);
+    CHECK_NOTHROW(p.validate());
+    p.bond_size_effect_modulus = 7.0;
+    CHECK_THROWS_AS(p.validate(), UserError);
+}
+
 TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the strength", "[dem][bond]")
 {
     const DemParameters p = quietParameters();
