@@ -165,6 +165,7 @@ struct PairKernelArgs {
     int n_pairs = 0;
     CellContactView cells;
     const int* intact_bonds = nullptr;  // per interface
+    const int* bond_offset = nullptr;   // per interface: its bonds are [offset[k], offset[k + 1])
     const int* cell_a = nullptr;
     const int* cell_b = nullptr;
     const int* interface = nullptr;  // -1 when the pair shares no face
@@ -223,8 +224,12 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     a.force_on_b[p] = a.contact_point[p] = Vec3{};
     const CellContactView& cells = a.cells;
     const int iface = a.interface[p];
-    // Bonded pairs never get contact forces; the contact starts when the last bond breaks.
-    const bool bonded = iface >= 0 && a.intact_bonds[iface] > 0;
+    // A pair whose bonds are all intact gets no contact force. The contact starts at the
+    // first broken bond: a cracked face can close where its bonds are gone (the cells hinge
+    // on the bonds left), and a contact switched on only at the last bond would start with
+    // whatever overlap that hinging made, its Hertz energy out of nothing (docs/theory-dem.md §6).
+    const bool bonded =
+        iface >= 0 && a.intact_bonds[iface] == a.bond_offset[iface + 1] - a.bond_offset[iface];
     const Vec3 between = cells.position[cb] - cells.position[ca];
     const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
     if (bonded || norm2(between) > reach * reach) return clearItem(a.items, p);

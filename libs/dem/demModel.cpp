@@ -930,14 +930,16 @@ void DemModel::rebuildNeighbourLists()
     next.last_normal.reserve(near.size());
     std::size_t old = 0;
     for (const auto& [a, b] : near) {
-        // The interface of the pair, if it shares a bonded face. Pairs still bonded
-        // are left out: when their last bond breaks the lists are rebuilt.
+        // The interface of the pair, if it shares a bonded face. Pairs whose every bond
+        // is intact are left out: when their first bond breaks the lists are rebuilt.
         const auto begin = neighbour_cell_.begin() + neighbour_offset_[a];
         const auto end = neighbour_cell_.begin() + neighbour_offset_[a + 1];
         const auto found = std::lower_bound(begin, end, b);
         const int iface =
             found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1;
-        if (iface >= 0 && interfaces_.intact_bonds[iface] > 0) continue;
+        if (iface >= 0 && interfaces_.intact_bonds[iface] ==
+                              interfaces_.bond_offset[iface + 1] - interfaces_.bond_offset[iface])
+            continue;
         next.cell_a.push_back(a);
         next.cell_b.push_back(b);
         next.interface.push_back(iface);
@@ -970,7 +972,7 @@ void DemModel::rebuildNeighbourLists()
         wall_origin_at_build_.push_back(w.origin);
         wall_orientation_at_build_.push_back(w.orientation);
     }
-    interfaces_open_at_build_ = counters_.interfaces_open;
+    interfaces_cracked_at_build_ = counters_.interfaces_cracked;
     lists_valid_ = true;
     ++counters_.neighbour_rebuilds;
 }
@@ -1115,13 +1117,17 @@ void DemModel::runBondKernel(double dt)
     // next one is booked by step(), see bookFirstHalfKick).
     energies_.bond_damping += force_rates_.bond_damping * 0.5 * dt;
     energies_.bond_strain = strain;
-    int broken = 0, open = 0;
+    int broken = 0, open = 0, cracked = 0;
     for (int k = 0; k < interfaces_.size(); ++k) {
-        broken += interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
+        const int broken_here =
+            interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
+        broken += broken_here;
         open += interfaces_.intact_bonds[k] == 0;
+        cracked += broken_here > 0;
     }
     counters_.bonds_broken = broken;
     counters_.interfaces_open = open;
+    counters_.interfaces_cracked = cracked;
 }
 
 namespace {
@@ -1165,6 +1171,7 @@ void DemModel::runContactKernels(double dt)
     pa.n_pairs = pairs_.size();
     pa.cells = cellView();
     pa.intact_bonds = interfaces_.intact_bonds.data();
+    pa.bond_offset = interfaces_.bond_offset.data();
     pa.cell_a = pairs_.cell_a.data();
     pa.cell_b = pairs_.cell_b.data();
     pa.interface = pairs_.interface.data();
@@ -1265,8 +1272,8 @@ void DemModel::computeForces(double dt)
 {
     refreshKinematicCaches();
     runBondKernel(dt);
-    // Moved too far, or an interface lost its last bond (its pair must enter the list).
-    if (neighbourListsStale() || counters_.interfaces_open != interfaces_open_at_build_)
+    // Moved too far, or an interface lost its first bond (its pair must enter the list).
+    if (neighbourListsStale() || counters_.interfaces_cracked != interfaces_cracked_at_build_)
         rebuildNeighbourLists();
     runContactKernels(dt);
     gatherForces();

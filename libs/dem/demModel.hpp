@@ -50,6 +50,7 @@ struct DemCounters {
     int bonds = 0;
     int bonds_broken = 0;
     int interfaces_open = 0;       // cell pairs whose every bond is broken
+    int interfaces_cracked = 0;    // cell pairs with at least one broken bond (their contact is on)
     int contact_pairs_listed = 0;  // current neighbour list
     int contacts_active = 0;       // cell–cell contacts with overlap
     int wall_contacts_active = 0;
@@ -285,7 +286,7 @@ private:
     std::vector<Vec3> position_at_build_;
     std::vector<Vec3> wall_origin_at_build_;
     std::vector<Quat> wall_orientation_at_build_;
-    int interfaces_open_at_build_ = 0;
+    int interfaces_cracked_at_build_ = 0;
     bool lists_valid_ = false;
     bool forces_valid_ = false;
     bool rebase_energy_ = false;  // the caller changed the state: restart the balance

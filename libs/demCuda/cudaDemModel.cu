@@ -96,13 +96,13 @@ private:
 
 struct BondSums {
     double strain_energy, damping_power, fracture_dissipation;
-    int bonds_broken, interfaces_open;
+    int bonds_broken, interfaces_open, interfaces_cracked;
 };
 RF_HD inline BondSums combine(const BondSums& a, const BondSums& b)
 {
     return {a.strain_energy + b.strain_energy, a.damping_power + b.damping_power,
             a.fracture_dissipation + b.fracture_dissipation, a.bonds_broken + b.bonds_broken,
-            a.interfaces_open + b.interfaces_open};
+            a.interfaces_open + b.interfaces_open, a.interfaces_cracked + b.interfaces_cracked};
 }
 
 struct ContactSums {
@@ -188,7 +188,7 @@ template <class Law>
 __global__ void __launch_bounds__(threads_per_block) bondKernel(BondKernelArgs a, BondSums* partials)
 {
     const int k = blockIdx.x * blockDim.x + threadIdx.x;
-    BondSums s{0.0, 0.0, 0.0, 0, 0};
+    BondSums s{0.0, 0.0, 0.0, 0, 0, 0};
     if (k < a.n_interfaces) {
         BondBlockSums sums;
         bondInterfaceKernel<Law>(a, k, sums);
@@ -197,6 +197,7 @@ __global__ void __launch_bounds__(threads_per_block) bondKernel(BondKernelArgs a
         s.fracture_dissipation = sums.fracture_dissipation;
         s.bonds_broken = a.bond_offset[k + 1] - a.bond_offset[k] - a.intact_bonds[k];
         s.interfaces_open = a.intact_bonds[k] == 0;
+        s.interfaces_cracked = s.bonds_broken > 0;
     }
     blockSum(s, partials);
 }
@@ -736,7 +737,7 @@ void CudaDemModel::computeForces(double dt)
         bondKernel<BondLawOnDevice><<<bond_blocks, threads_per_block>>>(ba, d.bond_sums.data());
     check(cudaGetLastError(), "bond kernel");
     double strain = 0.0;
-    int broken = 0, open = 0;
+    int broken = 0, open = 0, cracked = 0;
     h.force_rates_.bond_damping = 0.0;
     for (const BondSums& s : downloadPartials(d.bond_sums, bond_blocks)) {
         strain += s.strain_energy;
@@ -744,13 +745,15 @@ void CudaDemModel::computeForces(double dt)
         h.energies_.fracture += s.fracture_dissipation;
         broken += s.bonds_broken;
         open += s.interfaces_open;
+        cracked += s.interfaces_cracked;
     }
     h.energies_.bond_damping += h.force_rates_.bond_damping * 0.5 * dt;  // second half kick (DemModel::step)
     h.energies_.bond_strain = strain;
     h.counters_.bonds_broken = broken;
     h.counters_.interfaces_open = open;
+    h.counters_.interfaces_cracked = cracked;
 
-    // Neighbour lists: stale after half a skin of motion or a face's last bond breaking.
+    // Neighbour lists: stale after half a skin of motion or a face's first bond breaking.
     bool stale = !h.lists_valid_ || d.position_at_build.size() != static_cast<std::size_t>(n_cells);
     if (!stale && n_cells > 0) {
         const int blocks = blocksFor(n_cells);
@@ -761,7 +764,7 @@ void CudaDemModel::computeForces(double dt)
         for (const CellSums& s : downloadPartials(d.cell_sums, blocks)) move2 = std::max(move2, s.max_move2);
         stale = h.neighbourListsStale(std::sqrt(move2));
     }
-    if (stale || h.counters_.interfaces_open != h.interfaces_open_at_build_) rebuildListsOnHost();
+    if (stale || h.counters_.interfaces_cracked != h.interfaces_cracked_at_build_) rebuildListsOnHost();
 
     // Contacts.
     CellContactView cells;
@@ -783,6 +786,7 @@ void CudaDemModel::computeForces(double dt)
     pa.n_pairs = h.pairs_.size();
     pa.cells = cells;
     pa.intact_bonds = d.intact_bonds.data();
+    pa.bond_offset = d.bond_offset.data();
     pa.cell_a = d.pair_a.data();
     pa.cell_b = d.pair_b.data();
     pa.interface = d.pair_interface.data();

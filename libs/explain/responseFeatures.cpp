@@ -42,6 +42,16 @@ double forceAt(const std::vector<double>& d, const std::vector<double>& f, doubl
 
 }  // namespace
 
+std::optional<std::size_t> failurePeakIndex(const std::vector<double>& f)
+{
+    std::size_t peak = 0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        if (f[i] > f[peak]) peak = i;
+        if (f[peak] > 0.0 && f[i] < (1.0 - failureDropFraction) * f[peak]) return peak;
+    }
+    return std::nullopt;
+}
+
 const char* featureName(int feature)
 {
     return names[feature];
@@ -65,22 +75,29 @@ std::optional<CurveFeatures> curveFeatures(const std::vector<double>& d, const s
         return std::nullopt;
     };
     if (d.size() != f.size() || f.size() < 4) return fail("fewer than 4 points");
-    const std::size_t ip = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+    if (!(*std::max_element(f.begin(), f.end()) > 0)) return fail("no positive force");
+    // The failure peak: the running maximum at the first notable drop, as a lab reads it
+    // (a split specimen that jams between the plates may carry more later: not the failure).
+    const auto failure = failurePeakIndex(f);
+    if (!failure)
+        return fail("no load drop: the force never falls " + std::to_string(int(100 * failureDropFraction)) +
+                    " % below its running maximum");
+    const std::size_t ip = *failure;
     const double fp = f[ip];
-    if (!(fp > 0)) return fail("no positive force");
     const auto d0 = firstCrossing(d, f, onsetFraction * fp, ip);
     const auto d30 = firstCrossing(d, f, 0.3 * fp, ip);
     const auto d70 = firstCrossing(d, f, 0.7 * fp, ip);
     if (!d0 || !d30 || !d70 || !(*d70 > *d30) || !(*d30 >= *d0))
         return fail("no rise from contact to the peak");
+    // Softening: the plate travel from the failure peak to the notable drop (which exists).
     std::optional<double> dDrop;
+    const double dropLevel = (1.0 - failureDropFraction) * fp;
     for (std::size_t i = ip + 1; i < f.size(); ++i)
-        if (f[i] < 0.5 * fp) {
-            const double t = (f[i - 1] - 0.5 * fp) / (f[i - 1] - f[i]);
+        if (f[i] < dropLevel) {
+            const double t = (f[i - 1] - dropLevel) / (f[i - 1] - f[i]);
             dDrop = d[i - 1] + t * (d[i] - d[i - 1]);
             break;
         }
-    if (!dDrop) return fail("no load drop: the force never falls below half of its peak after the peak");
     CurveFeatures c;
     c.peakForce = fp;
     c.peakDisplacement = d[ip] - *d0;
@@ -146,9 +163,9 @@ std::vector<double> meanCurve(const std::vector<std::vector<double>>& displaceme
         const auto& d = displacements[s];
         const auto& f = forces[s];
         if (f.empty()) continue;
-        const double fp = *std::max_element(f.begin(), f.end());
-        const std::size_t ip = static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin());
-        const auto d0 = firstCrossing(d, f, onsetFraction * fp, ip);
+        const std::size_t ip = failurePeakIndex(f).value_or(
+            static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin()));
+        const auto d0 = firstCrossing(d, f, onsetFraction * f[ip], ip);
         if (!d0) continue;
         for (int i = 0; i < n; ++i) {
             const double x = *d0 + upTo * i / std::max(1, n - 1);

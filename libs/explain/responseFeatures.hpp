@@ -3,13 +3,15 @@
 // numbers that the model effects move in recognisably different ways
 // (docs/explainGap.md, "Features"):
 //
-//   peakForce          mean peak (failure) force [N]
+//   peakForce          mean failure force [N]: the running maximum at the first drop of more
+//                      than 20 % below it (the lab's "first notable drop", as the solvers'
+//                      failureLoad), not a later maximum of a split specimen jammed between the plates
 //   peakForceSpread    standard deviation of the peak forces [N]
 //   peakDisplacement   mean displacement at the peak [m]
 //   secantStiffness    mean secant stiffness between 30 % and 70 % of the peak [N/m]
 //   toeIndex           mean ratio of the initial compliance (onset to 30 %) to the secant one:
 //                      1 for a straight rise, > 1 for a soft start (toe) [-]
-//   softening          mean displacement from the peak until the force is below half of it [m]
+//   softening          mean displacement from the failure peak to that 20 % drop [m]
 //
 // Displacements are measured from the contact onset: the first point where the force
 // reaches onsetFraction (2 %) of the curve's peak, interpolated. Curves are aligned there
@@ -29,6 +31,11 @@ const char* featureUnit(int feature);
 int featureIndex(const std::string& name);
 
 constexpr double onsetFraction = 0.02;
+constexpr double failureDropFraction = 0.2;
+
+// Index of the failure peak of a force series: the running maximum at the first point
+// more than failureDropFraction below it; std::nullopt when the force never drops so far.
+std::optional<std::size_t> failurePeakIndex(const std::vector<double>& force);
 
 struct CurveFeatures {
     double peakForce = 0.0, peakDisplacement = 0.0, secantStiffness = 0.0, toeIndex = 0.0, softening = 0.0;
@@ -36,7 +43,7 @@ struct CurveFeatures {
 
 // The features of one curve (displacement ascending in time, force compression
 // positive). std::nullopt with the reason when the curve has no rise to a peak or
-// no drop below half of it after the peak.
+// no notable drop after it.
 std::optional<CurveFeatures> curveFeatures(const std::vector<double>& displacement,
                                            const std::vector<double>& force, std::string* whyNot = nullptr);
 

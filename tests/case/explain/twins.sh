@@ -44,10 +44,11 @@ scenario none       ""                                                    noGapB
 scenario seating    "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset
 scenario compliance "machineCompliance { compliance 5e-9; }"              explained machineCompliance
 # Crumbling under the plates and a compliant frame both soften the disc's contact: on this
-# 60-cell disc the two fit the same data equally well (AIC within 2; which one comes out
-# ahead depends on the specimen seed, docs/explainGap.md), so the hidden crumbling must be
-# reported as indistinguishable from compliance, not guessed.
-scenario crumbling  "contactCrumbling { strengthLoss 0.8; depth 8e-3; }"      indistinguishable \
+# 60-cell disc the two can fit the same data about equally well (docs/explainGap.md). The
+# hidden crumbling must be named, or reported as indistinguishable from compliance; never
+# compliance alone (since the failure peak is the first notable drop, 2026-12-02, crumbling
+# is named: compliance falls short of the held-out test).
+scenario crumbling  "contactCrumbling { strengthLoss 0.8; depth 8e-3; }"      "explained|indistinguishable" \
     "contactCrumbling machineCompliance"
 # Bond scatter 1/m = 0.6 sits at the detection limit of 12 + 12 discs (p 0.02 against the
 # 0.01 significance with the single force evaluation per step, found at p < 0.01 before):

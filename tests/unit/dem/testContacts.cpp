@@ -144,9 +144,44 @@ TEST_CASE("two cells touching after their bonds broke: Hertz between the cores w
     const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(overlap, 1.5);
     CHECK(model.counters().contacts_active == 1);
     CHECK(model.counters().interfaces_open == 1);
+    CHECK(model.counters().interfaces_cracked == 1);
     CHECK(model.cells().force[1].x == Approx(hertz).epsilon(1e-9));
     CHECK(model.cells().force[0].x == Approx(-hertz).epsilon(1e-9));
     CHECK(std::fabs(model.cells().force[1].y) < 1e-9 * hertz);
+}
+
+TEST_CASE("a cracked face is in contact from its first broken bond; an intact one is not", "[dem][contact]")
+{
+    // A face that has lost some of its bonds can hinge on the rest and close where they are
+    // gone: its contact must already be on then, not start with that overlap at the last bond.
+    const DemParameters p = quietContactParameters();
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation),
+                   p);
+    const Vec3 rest = model.cells().position[1];
+    const Quat q = model.cells().orientation[1];
+    const double overlap = 2e-6;
+    model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
+    test::evaluateForces(model, 0.0);
+    CHECK(model.counters().contacts_active == 0);
+    CHECK(model.counters().interfaces_cracked == 0);
+    const double all_bonds = model.cells().force[1].x;
+
+    BondArrays cracked = model.bonds();
+    REQUIRE(cracked.stage.size() >= 2);
+    cracked.stage[0] = bondBroken;
+    cracked.damage[0] = 1.0;
+    model.setBondHistory(cracked);
+    test::evaluateForces(model, 0.0);
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
+                                           p.rock_poisson_ratio);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(overlap, 1.5);
+    const double n = static_cast<double>(cracked.stage.size());
+    CHECK(model.counters().interfaces_cracked == 1);
+    CHECK(model.counters().interfaces_open == 0);
+    CHECK(model.counters().contacts_active == 1);
+    // The bonds left carry (n - 1)/n of the compression; the contact adds the Hertz force.
+    CHECK(model.cells().force[1].x == Approx(all_bonds * (n - 1.0) / n + hertz).epsilon(1e-9));
 }
 
 TEST_CASE("a plate given as two triangles gives the analytic plate's force", "[dem][wall]")
