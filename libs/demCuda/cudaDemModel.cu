@@ -100,9 +100,12 @@ struct BondSums {
 };
 RF_HD inline BondSums combine(const BondSums& a, const BondSums& b)
 {
-    return {a.strain_energy + b.strain_energy, a.damping_power + b.damping_power,
-            a.fracture_dissipation + b.fracture_dissipation, a.bonds_broken + b.bonds_broken,
-            a.interfaces_open + b.interfaces_open, a.interfaces_cracked + b.interfaces_cracked};
+    return {a.strain_energy + b.strain_energy,
+            a.damping_power + b.damping_power,
+            a.fracture_dissipation + b.fracture_dissipation,
+            a.bonds_broken + b.bonds_broken,
+            a.interfaces_open + b.interfaces_open,
+            a.interfaces_cracked + b.interfaces_cracked};
 }
 
 struct ContactSums {
