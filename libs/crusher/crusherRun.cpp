@@ -79,10 +79,12 @@ void compactShapes(CellShapes& s, const std::vector<int>& new_index)
     s = std::move(out);
 }
 
-int addSurface(DemModel& model, const fs::path& stl, const WallMotion& motion)
+// The liner as a wall of the model, and its profile for the feed (linerClearance.hpp).
+RevolvedLiner addLiner(DemModel& model, const fs::path& stl, const WallMotion& motion, SurfaceFacing facing)
 {
     const TriSurface surface = readStl(stl);
-    return model.addTriSurface(surface.points, surface.triangles, motion);
+    const int wall = model.addTriSurface(surface.points, surface.triangles, motion);
+    return revolvedLiner(surface, wall, facing, stl.string());
 }
 
 }  // namespace
@@ -138,8 +140,14 @@ struct CrusherRun::Impl {
                                                 makeFeedRockTemplate(rockMesh, parameters.rock_density));
         model = std::make_unique<DemModel>(parameters);
         const MantlePose start = mantlePose(loading.machine.kinematics, 0.0);
-        mantle = addSurface(*model, loading.machine.mantle_stl, wallMotion(start));
-        concave = addSurface(*model, loading.machine.concave_stl, WallMotion{});
+        std::vector<RevolvedLiner> liners;
+        liners.push_back(
+            addLiner(*model, loading.machine.mantle_stl, wallMotion(start), SurfaceFacing::awayFromAxis));
+        liners.push_back(
+            addLiner(*model, loading.machine.concave_stl, WallMotion{}, SurfaceFacing::towardsAxis));
+        mantle = liners[0].wall;
+        concave = liners[1].wall;
+        factory->setLiners(std::move(liners));
         if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
         chooseTimeStep();
         if (controlDict.found("functions") && controlDict.subDict("functions").found("machine"))

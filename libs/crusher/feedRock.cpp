@@ -89,9 +89,22 @@ VoronoiMesh FeedFactory::smallestRock() const
     return scaleVoronoiMesh(rock_.mesh, spec_.size_min / rock_.sieve_size, {});
 }
 
-bool FeedFactory::place(const DemModel& model, int k, double reach, Vec3& centre) const
+bool FeedFactory::clearOfLiners(const DemModel& model, double s, const Mat3& R, const Vec3& centre) const
+{
+    const double margin = spec_.liner_clearance + s * rock_.mesh.dilationRadius;
+    for (const RevolvedLiner& liner : liners_) {
+        const WallState& wall = model.wall(liner.wall);
+        for (const Vec3& v : rock_.mesh.vertices)
+            if (linerClearance(liner, wall, centre + R * (s * v)) < margin) return false;
+    }
+    return true;
+}
+
+bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre) const
 {
     const CellArrays& cells = model.cells();
+    const double reach = s * rock_.reach;
+    const Mat3 R = rotationMatrix(orientation);
     for (int a = 0; a < spec_.attempts; ++a) {
         const std::uint64_t first = 4 + 3 * static_cast<std::uint64_t>(a);
         const double z = spec_.z_min + (spec_.z_max - spec_.z_min) * uniform01(spec_.seed, k, first);
@@ -105,7 +118,7 @@ bool FeedFactory::place(const DemModel& model, int k, double reach, Vec3& centre
             const double gap = reach + cells.bounding_radius[c];
             clear = norm2(cells.position[c] - centre) > gap * gap;
         }
-        if (clear) return true;
+        if (clear && clearOfLiners(model, s, R, centre)) return true;
     }
     return false;
 }
@@ -120,14 +133,15 @@ std::vector<InsertedRock> FeedFactory::feed(DemModel& model, double time)
         const double u = uniform01(spec_.seed, k, 0);
         const double size = spec_.size_min + (spec_.size_max - spec_.size_min) * u;
         const double s = size / rock_.sieve_size;
+        const Quat orientation = randomOrientation(spec_.seed, k, 1);
         Vec3 centre;
-        if (!place(model, k, s * rock_.reach, centre)) break;
+        if (!place(model, k, s, orientation, centre)) break;
         InsertedRock rock;
         rock.index = k;
         rock.size = size;
         rock.mesh = scaleVoronoiMesh(rock_.mesh, s, {});
         rock.pose.translation = centre;
-        rock.pose.orientation = randomOrientation(spec_.seed, k, 1);
+        rock.pose.orientation = orientation;
         rock.pose.velocity = spec_.velocity;
         rock.first_cell = model.insertCells(rock.mesh, rock.pose);
         for (int c = rock.first_cell; c < model.cells().size(); ++c) rock.mass += model.cells().mass[c];

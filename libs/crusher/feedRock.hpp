@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "crusher/linerClearance.hpp"
 #include "crusher/machineLoading.hpp"
 #include "dem/demModel.hpp"
 #include "dem/quat.hpp"
@@ -52,11 +53,15 @@ struct InsertedRock {
 // the counter-based generator under the case seed: size (draw 0), orientation
 // (draws 1-3), then per placement attempt a (draws 4 + 3a ..): height, radius and
 // azimuth in the feed region. A position is accepted when the rock's bounding sphere
-// clears every cell's bounding sphere; when every attempt fails the rock waits for
-// the next call (same draws, so the run stays reproducible).
+// clears every cell's bounding sphere and, with liners given (setLiners), every vertex
+// of the rock's cells lies in the free chamber at least linerClearance plus the cells'
+// dilation radius from each liner in its current pose; when every attempt fails the
+// rock waits for the next call (same draws, so the run stays reproducible).
 class FeedFactory {
 public:
     FeedFactory(const FeedSpec& spec, FeedRockTemplate rock);
+    // The liners a rock must clear (the crusher's mantle and concave); none: not checked.
+    void setLiners(std::vector<RevolvedLiner> liners) { liners_ = std::move(liners); }
     std::vector<InsertedRock> feed(DemModel& model, double time);
     double massFed() const { return mass_fed_; }
     int rocksFed() const { return rocks_fed_; }
@@ -65,10 +70,12 @@ public:
     VoronoiMesh smallestRock() const;
 
 private:
-    bool place(const DemModel& model, int k, double reach, Vec3& centre) const;
+    bool place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre) const;
+    bool clearOfLiners(const DemModel& model, double s, const Mat3& R, const Vec3& centre) const;
 
     FeedSpec spec_;
     FeedRockTemplate rock_;
+    std::vector<RevolvedLiner> liners_;
     double mass_fed_ = 0.0;
     int rocks_fed_ = 0;
 };

@@ -85,6 +85,9 @@ void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
     f.velocity = d.getOrDefault<Vec3>("velocity", Vec3{});
     f.attempts = d.getOrDefault<int>("attempts", 20);
     if (f.attempts < 1) throw UserError(d.fileName() + ": feed/attempts must be at least 1");
+    // Every placed rock clears the liners; this adds a margin (e.g. so a rock put into the
+    // chamber does not touch the mantle within its first steps).
+    f.liner_clearance = d.getScalarOrDefault("linerClearance", 0.0, Bounds::nonNegative());
     f.interval = d.getScalar("interval", Bounds::positive());
     f.seed = static_cast<std::uint64_t>(d.getOrDefault<long>("seed", 1));
 }

@@ -29,7 +29,8 @@ struct FeedSpec {
     double z_min = 0.0, z_max = 0.0, r_min = 0.0, r_max = 0.0;  // feed region [m]
     Vec3 velocity;                                              // of the inserted rocks [m/s]
     int attempts = 20;                                          // placement attempts per rock
-    double interval = 0.0;                                      // time between feed events [s]
+    double liner_clearance = 0.0;  // least distance of a placed rock from the liners [m]
+    double interval = 0.0;         // time between feed events [s]
     std::uint64_t seed = 1;
 };
 
