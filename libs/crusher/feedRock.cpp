@@ -65,6 +65,12 @@ FeedRockTemplate makeFeedRockTemplate(const VoronoiMesh& mesh, double density)
     t.equivalent_diameter = a.fragments[0].equivalent_diameter;
     for (const Vec3& v : t.mesh.vertices) t.reach = std::max(t.reach, norm(v));
     t.reach += t.mesh.dilationRadius;
+    t.cell_reach.assign(t.mesh.nCells(), 0.0);
+    for (int c = 0; c < t.mesh.nCells(); ++c) {
+        for (int v = t.mesh.cellVertexOffset[c]; v < t.mesh.cellVertexOffset[c + 1]; ++v)
+            t.cell_reach[c] = std::max(t.cell_reach[c], norm(t.mesh.vertices[v] - t.mesh.centroids[c]));
+        t.cell_reach[c] += t.mesh.dilationRadius;
+    }
     return t;
 }
 
@@ -100,12 +106,13 @@ bool FeedFactory::clearOfLiners(const DemModel& model, double s, const Mat3& R, 
     return true;
 }
 
-bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre) const
+bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre)
 {
     const CellArrays& cells = model.cells();
     const double reach = s * rock_.reach;
     const Mat3 R = rotationMatrix(orientation);
-    for (int a = 0; a < spec_.attempts; ++a) {
+    std::vector<Vec3> cellCentre(rock_.mesh.nCells());
+    for (long a = attempts_spent_; a < attempts_spent_ + spec_.attempts; ++a) {
         const std::uint64_t first = 4 + 3 * static_cast<std::uint64_t>(a);
         const double z = spec_.z_min + (spec_.z_max - spec_.z_min) * uniform01(spec_.seed, k, first);
         const double r2 =
@@ -113,13 +120,24 @@ bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orie
             (spec_.r_max * spec_.r_max - spec_.r_min * spec_.r_min) * uniform01(spec_.seed, k, first + 1);
         const double phi = 2.0 * pi * uniform01(spec_.seed, k, first + 2);
         centre = {std::sqrt(r2) * std::cos(phi), std::sqrt(r2) * std::sin(phi), z};
+        for (int i = 0; i < rock_.mesh.nCells(); ++i)
+            cellCentre[i] = centre + R * (s * rock_.mesh.centroids[i]);
+        // Cell spheres against cell spheres, after the rock's sphere as a quick filter.
         bool clear = true;
         for (int c = 0; c < cells.size() && clear; ++c) {
             const double gap = reach + cells.bounding_radius[c];
-            clear = norm2(cells.position[c] - centre) > gap * gap;
+            if (norm2(cells.position[c] - centre) > gap * gap) continue;
+            for (int i = 0; i < rock_.mesh.nCells() && clear; ++i) {
+                const double g = s * rock_.cell_reach[i] + cells.bounding_radius[c];
+                clear = norm2(cells.position[c] - cellCentre[i]) > g * g;
+            }
         }
-        if (clear && clearOfLiners(model, s, R, centre)) return true;
+        if (clear && clearOfLiners(model, s, R, centre)) {
+            attempts_spent_ = 0;
+            return true;
+        }
     }
+    attempts_spent_ += spec_.attempts;
     return false;
 }
 

@@ -30,6 +30,9 @@ struct FeedRockTemplate {
     double sieve_size = 0.0;  // intermediate principal extent (libs/fragments) [m]
     double equivalent_diameter = 0.0;
     double reach = 0.0;  // largest vertex distance from the centre + r_d [m]
+    // Per cell: the largest distance of its vertices from its centroid + r_d [m] (a sphere
+    // holding the cell, as the model's bounding radius does).
+    std::vector<double> cell_reach;
 };
 // The template rock as one intact fragment; UserError for an empty mesh.
 FeedRockTemplate makeFeedRockTemplate(const VoronoiMesh& mesh, double density);
@@ -52,11 +55,13 @@ struct InsertedRock {
 // mass_rate * t (and at most total_mass), each rock k drawn from its own stream k of
 // the counter-based generator under the case seed: size (draw 0), orientation
 // (draws 1-3), then per placement attempt a (draws 4 + 3a ..): height, radius and
-// azimuth in the feed region. A position is accepted when the rock's bounding sphere
-// clears every cell's bounding sphere and, with liners given (setLiners), every vertex
-// of the rock's cells lies in the free chamber at least linerClearance plus the cells'
-// dilation radius from each liner in its current pose; when every attempt fails the
-// rock waits for the next call (same draws, so the run stays reproducible).
+// azimuth in the feed region. A position is accepted when the bounding sphere of each of
+// the rock's cells clears every cell's bounding sphere in the model and, with liners given
+// (setLiners), every vertex of the rock's cells lies in the free chamber at least
+// linerClearance plus the cells' dilation radius from each liner in its current pose.
+// When every attempt fails the rock waits for the next call, which goes on with the next
+// `attempts` draws of its stream (the draws are numbered, so the run stays reproducible),
+// and the rocks after it wait with it.
 class FeedFactory {
 public:
     FeedFactory(const FeedSpec& spec, FeedRockTemplate rock);
@@ -70,7 +75,7 @@ public:
     VoronoiMesh smallestRock() const;
 
 private:
-    bool place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre) const;
+    bool place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre);
     bool clearOfLiners(const DemModel& model, double s, const Mat3& R, const Vec3& centre) const;
 
     FeedSpec spec_;
@@ -78,6 +83,7 @@ private:
     std::vector<RevolvedLiner> liners_;
     double mass_fed_ = 0.0;
     int rocks_fed_ = 0;
+    long attempts_spent_ = 0;  // placement draws already used by the waiting rock rocks_fed_
 };
 
 }  // namespace rockfrac
