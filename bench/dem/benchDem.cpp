@@ -9,6 +9,10 @@
 //                                   of along a Morton curve (the default, cellOrder morton)
 //   benchDem -case <dir> [N]        a bondedDemFoam case from its latest time directory (e.g. an
 //                                   SPB rock after fracture), N steps
+//   benchDem -liners [rocks] [N]    rocks of 30 cells (40-55 mm) resting in the lower chamber of the
+//                                   CH660 (meshCrusher's liners at 360 segments, mantle gyrating at
+//                                   290 rpm): the liner contacts of a choked crusher, N steps after
+//                                   settling 2000
 //
 // Prints cell-steps per second (wall clock, best of 3 repetitions), bonds per cell, the
 // model's memory per cell (device memory with -cuda) and the time step (bench/run gives the
@@ -24,6 +28,8 @@
 #include "core/dictionary.hpp"
 #include "core/random.hpp"
 #include "core/timeControl.hpp"
+#include "crusher/feedRock.hpp"
+#include "crusher/linerClearance.hpp"
 #include "dem/demModel.hpp"
 #include "demCase/demCase.hpp"
 #include "demCuda/cudaDemModel.hpp"
@@ -153,6 +159,69 @@ void fromCase(const std::string& caseDir, int steps)
     }
 }
 
+// Rocks in the lower chamber of the CH660 (the profiles of tutorials/CH660/geometry, the
+// kinematics meshCrusher computes for them), settled under gravity onto the liners.
+void linerContacts(int rocks, int steps)
+{
+    const Profile mantle_profile{{0.0, 0.66}, {0.12, 0.64}, {0.22, 0.55}, {0.43, 0.10}, {0.50, 0.0}};
+    const Profile concave_profile{{0.3846, 0.5051}, {0.4276, 0.3181}, {0.4759, 0.1322}, {0.5605, 0.0001}};
+    CrusherKinematics k;
+    k.pivot = {0.0, 0.0, 1.5};
+    k.eccentric_angle = 0.008481216352835365;
+    k.eccentric_speed = 30.36872898470133;
+    const TriSurface mantle = revolveProfileShaped(mantle_profile, 360, SurfaceFacing::awayFromAxis);
+    const TriSurface concave = revolveProfileShaped(concave_profile, 360, SurfaceFacing::towardsAxis);
+    DemParameters p;
+    p.rock_youngs_modulus = 7.7e9;  // the reduced crusher's 10 x softer rock
+    p.bond_youngs_modulus = 4.6e9;
+    p.damping_reading = DampingReading::criticalFraction;
+    p.bond_damping = 0.05;
+    const VoronoiMesh rock =
+        generateVoronoiMesh(Domain::box({0.0, 0.0, 0.0}, {0.03, 0.02, 0.012}), 30, 2.5e-3, 7);
+    FeedSpec spec;
+    spec.size_min = 0.040;
+    spec.size_max = 0.055;
+    spec.mass_rate = 1.0;  // [kg/s] fed one rock per call below (each ~0.1 kg)
+    spec.z_min = 0.03;
+    spec.z_max = 0.30;
+    spec.r_min = 0.33;
+    spec.r_max = 0.55;
+    spec.attempts = 2000;
+    spec.interval = 1.0;
+    spec.liner_clearance = 1e-3;
+    auto motion = [&](double t) {
+        const MantlePose m = mantlePose(k, t);
+        return WallMotion{m.translation, quatFromRotationVector(m.rotation_vector), m.velocity,
+                          m.angular_velocity};
+    };
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        DemModel model(p);
+        const int mw = model.addTriSurface(mantle.points, mantle.triangles, motion(0.0));
+        const int cw = model.addTriSurface(concave.points, concave.triangles);
+        FeedFactory factory(spec, makeFeedRockTemplate(rock, p.rock_density));
+        factory.setLiners({revolvedLiner(mantle, mw, SurfaceFacing::awayFromAxis, "mantle"),
+                           revolvedLiner(concave, cw, SurfaceFacing::towardsAxis, "concave")});
+        // One rock at a time up to `rocks` (or as many as find room in 400 calls).
+        for (int call = 1; call <= 400 && factory.rocksFed() < rocks; ++call)
+            factory.feed(model, 0.01 * call);
+        const double dt = 0.8 * DemModel(factory.smallestRock(), p).criticalTimeStep().value;
+        auto run = [&](int n) {
+            const auto start = std::chrono::steady_clock::now();
+            for (int s = 0; s < n; ++s) {
+                model.setWallMotion(mw, motion(model.time()));
+                model.step(dt);
+            }
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        };
+        run(2000);
+        const double seconds = run(steps);
+        const std::string label = "CH660 liners, " + std::to_string(factory.rocksFed()) + " rocks";
+        report(label.c_str(), model.cells().size(), model.nBonds(), model.memoryBytes(), threads, steps,
+               seconds, dt);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -160,6 +229,10 @@ int main(int argc, char** argv)
     header();
     if (argc >= 3 && std::strcmp(argv[1], "-case") == 0) {
         fromCase(argv[2], argc >= 4 ? std::atoi(argv[3]) : 2000);
+        return 0;
+    }
+    if (argc >= 2 && std::strcmp(argv[1], "-liners") == 0) {
+        linerContacts(argc >= 3 ? std::atoi(argv[2]) : 30, argc >= 4 ? std::atoi(argv[3]) : 2000);
         return 0;
     }
     if (argc >= 3 && std::strcmp(argv[1], "-block") == 0) {

@@ -13,6 +13,7 @@
 #include "core/parallel.hpp"
 #include "core/vec3.hpp"
 #include "dem/gjk.hpp"
+#include "dem/quat.hpp"
 
 namespace rockfrac {
 
@@ -409,6 +410,8 @@ RF_HD inline void closestPointsOfSegments(const Vec3& p1, const Vec3& q1, const 
 // ends (a line contact); the pair's reach grows smoothly to r_d at 20 degrees.
 constexpr double ridge_parallel_begin = 10.0 * 3.14159265358979323846 / 180.0;
 constexpr double ridge_parallel_full = 20.0 * 3.14159265358979323846 / 180.0;
+constexpr double cos_ridge_parallel_begin = 0.98480775301220805936;  // cos 10 degrees
+constexpr double cos_ridge_parallel_full = 0.93969262078590838405;   // cos 20 degrees
 
 // Bits of triangle_features: edge k (from corner k to corner k+1) is a ridge seen from
 // the winding side (+1) or the other side (-1); corner k is a convex vertex seen from
@@ -436,21 +439,35 @@ struct SurfaceNearest {
     bool boundary = false;
 };
 
-RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const WallPose& wall, int item,
-                                             const Vec3& x, double tolerance)
-{
-    SurfaceNearest s;
+// What the search for the cell centre leaves for the searches of the core's vertices
+// (docs/theory-dem.md §7, "Cost"): the distance of the centre from each candidate
+// triangle, so that a triangle whose distance from a vertex x cannot come within the
+// tolerance of the best one found (d(x, t) >= d(c, t) - |x - c|) is not visited, and the
+// nearest triangle to start from. Items with more candidates than it holds are searched
+// in full.
+constexpr int max_culled_triangles = 192;
+struct SurfaceCull {
+    Vec3 centre;  // wall frame
+    double centre_distance[max_culled_triangles];
+    double least = 1e300;  // distance of the centre from the surface
+    int nearest = -1;      // entry (into the item's candidates) of the nearest triangle
+    bool valid = false;
+};
+
+// Accumulates the pseudo-normal of the nearest feature over the triangles that hold it
+// (within the tolerance), in the wall frame.
+struct NearestSums {
     Vec3 face, edges, corners;
     int n_faces = 0, n_edges = 0, n_corners = 0;
     double corner_angle = 0.0;
-    for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
-        const Vec3* t = a.triangle_vertices + 3 * a.item_triangles[e];
-        const Vec3 p[3] = {wall.origin + wall.rotation * t[0], wall.origin + wall.rotation * t[1],
-                           wall.origin + wall.rotation * t[2]};
+
+    // Visits triangle p (3 corners) and returns its distance from x.
+    RF_HD double visit(const Vec3* p, const Vec3& x, double tolerance, SurfaceNearest& s)
+    {
         int feature = 0, vertex = 0;
         const Vec3 q = closestPointOnTriangle(x, p[0], p[1], p[2], feature, vertex);
         const double distance = norm(x - q);
-        if (distance > s.distance + tolerance) continue;
+        if (distance > s.distance + tolerance) return distance;
         if (distance < s.distance - tolerance) {  // a new nearest feature: restart the sums
             face = edges = corners = Vec3{};
             n_faces = n_edges = n_corners = 0;
@@ -461,7 +478,7 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
             s.point = q;
         }
         const Vec3 area_normal = cross(p[1] - p[0], p[2] - p[0]);
-        if (!(norm2(area_normal) > 0.0)) continue;  // zero area: no normal of its own
+        if (!(norm2(area_normal) > 0.0)) return distance;  // zero area: no normal of its own
         const Vec3 n = normalised(area_normal);
         if (feature == featureFace) {
             face += n;
@@ -476,17 +493,69 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
             corner_angle += angle;
             ++n_corners;
         }
+        return distance;
     }
-    constexpr double pi = 3.14159265358979323846;
-    if (n_faces > 0) {
-        s.pseudo_normal = face;
-    } else if (n_corners > 0) {
-        s.pseudo_normal = corners;
-        s.boundary = corner_angle < 1.5 * pi;
+    // The pseudo-normal and boundary flag of the nearest feature (wall frame).
+    RF_HD void finish(SurfaceNearest& s) const
+    {
+        constexpr double pi = 3.14159265358979323846;
+        if (n_faces > 0) {
+            s.pseudo_normal = face;
+        } else if (n_corners > 0) {
+            s.pseudo_normal = corners;
+            s.boundary = corner_angle < 1.5 * pi;
+        } else {
+            s.pseudo_normal = edges;
+            s.boundary = n_edges < 2;
+        }
+    }
+};
+
+// The nearest point of a triangulated surface (the candidate triangles of an item) to x,
+// with the pseudo-normal of the feature it lies on (Baerentzen & Aanaes 2005): the face
+// normal for a face point, the sum of the two face normals for an edge, the angle-weighted
+// sum for a vertex, all from the triangles' winding (a consistently oriented surface).
+// boundary: the point lies on an edge of one triangle only or a vertex whose angles do
+// not close around it (an open rim), where the surface has no inside.
+// The search runs in the wall's frame (x taken there once, the point and normal brought
+// back), so the triangles are not moved for every query. With `cull` filled by the search
+// for the centre (cull->valid), triangles that cannot hold the nearest point are skipped;
+// without it (nullptr) and cull not yet valid, every candidate is visited and, when cull is
+// given, the centre's distances are recorded in it.
+RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const WallPose& wall, int item,
+                                             const Vec3& x, double tolerance, SurfaceCull* cull = nullptr)
+{
+    SurfaceNearest s;
+    NearestSums sums;
+    const Vec3 local = transposeTimes(wall.rotation, x - wall.origin);
+    const int begin = a.item_triangle_offset[item], end = a.item_triangle_offset[item + 1];
+    const bool record = cull != nullptr && !cull->valid && end - begin <= max_culled_triangles;
+    const bool culled = cull != nullptr && cull->valid;
+    if (culled) {
+        // Start from the centre's nearest triangle: a close first bound.
+        const double reach = norm(local - cull->centre);
+        sums.visit(a.triangle_vertices + 3 * a.item_triangles[begin + cull->nearest], local, tolerance, s);
+        for (int e = begin; e < end; ++e) {
+            if (e - begin == cull->nearest) continue;
+            if (cull->centre_distance[e - begin] - reach > s.distance + tolerance) continue;
+            sums.visit(a.triangle_vertices + 3 * a.item_triangles[e], local, tolerance, s);
+        }
     } else {
-        s.pseudo_normal = edges;
-        s.boundary = n_edges < 2;
+        for (int e = begin; e < end; ++e) {
+            const double d = sums.visit(a.triangle_vertices + 3 * a.item_triangles[e], local, tolerance, s);
+            if (record) {
+                cull->centre_distance[e - begin] = d;
+                if (d < cull->least) cull->least = d, cull->nearest = e - begin;
+            }
+        }
+        if (record) {
+            cull->centre = local;
+            cull->valid = cull->nearest >= 0;
+        }
     }
+    sums.finish(s);
+    s.point = wall.origin + wall.rotation * s.point;
+    s.pseudo_normal = wall.rotation * s.pseudo_normal;
     return s;
 }
 
@@ -515,9 +584,14 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
 // never hold the nearest point of a convex core, so they need no pairs of their own; a core
 // face on a flat region is held by its corners alone, as on a plate.
 // Returns the number of points; sets cores_intersect when a feature is behind the surface.
+// cull: the centre's search (nearestOnSurface), or nullptr. With it, a core vertex x with
+// d(c) - |x - c| > r_d is out of reach in front of the surface (every surface point is
+// farther than r_d from it; a vertex reaching behind a liner round its rim, farther than
+// r_d from the steel, is not looked for), and a triangle farther from the centre than the
+// dilated core reaches holds no ridge or corner pair.
 RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core, int c, double radius,
                            double side, const WallPose& wall, int item, PatchPoint* points,
-                           bool& cores_intersect)
+                           bool& cores_intersect, SurfaceCull* cull = nullptr)
 {
     int n = 0;
     cores_intersect = false;
@@ -530,7 +604,9 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
             p.normal = wall.normal;
             p.overlap = radius - dot(x - wall.origin, wall.normal);
         } else {
-            const SurfaceNearest s = nearestOnSurface(a, wall, item, x, tolerance);
+            if (cull != nullptr && cull->valid && cull->least - norm(x - core.position) > radius + tolerance)
+                continue;
+            const SurfaceNearest s = nearestOnSurface(a, wall, item, x, tolerance, cull);
             const Vec3 gap = x - s.point;
             behind = !s.boundary && side * dot(gap, s.pseudo_normal) < 0.0;
             p.overlap = behind ? radius + s.distance : radius - s.distance;
@@ -553,6 +629,9 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
         const int t = a.item_triangles[e];
         const unsigned short flags = a.triangle_features[t];
         if (flags == 0) continue;
+        if (cull != nullptr && cull->valid &&
+            cull->centre_distance[e - a.item_triangle_offset[item]] >= reach)
+            continue;
         const Vec3* local = a.triangle_vertices + 3 * t;
         const Vec3 p[3] = {wall.origin + wall.rotation * local[0], wall.origin + wall.rotation * local[1],
                            wall.origin + wall.rotation * local[2]};
@@ -569,13 +648,15 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                     // ridge_parallel_begin of parallel, 1 beyond ridge_parallel_full.
                     const Vec3 along = normalised(x1 - x0);
                     const double cosine = dot(along, ridge);
+                    const double abs_cosine = cosine < 0.0 ? -cosine : cosine;
+                    if (!(abs_cosine < cos_ridge_parallel_begin)) continue;
                     const Vec3 binormal = cross(along, ridge);
-                    const double angle = std::atan2(norm(binormal), cosine < 0.0 ? -cosine : cosine);
-                    if (!(angle > ridge_parallel_begin)) continue;
                     double weight = 1.0, weight_slope = 0.0;
-                    if (angle < ridge_parallel_full) {
+                    if (abs_cosine > cos_ridge_parallel_full) {  // the angle needed only in the ramp
+                        const double angle = std::atan2(norm(binormal), abs_cosine);
                         const double width = ridge_parallel_full - ridge_parallel_begin;
-                        const double u = (angle - ridge_parallel_begin) / width;
+                        double u = (angle - ridge_parallel_begin) / width;
+                        u = u < 0.0 ? 0.0 : u;
                         weight = u * u * (3.0 - 2.0 * u);
                         weight_slope = 6.0 * u * (1.0 - u) / width;
                     }
@@ -643,14 +724,15 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     PatchPoint points[max_patch_points];
     bool cores_intersect = false;
     double side = 1.0;
+    SurfaceCull cull;
     if (wall.kind == wallTriSurface) {
         // The nearest point of the surface to the centre gives the cell's side; when it is
         // farther than the dilated core reaches (bounding radius), nothing can touch.
-        const SurfaceNearest s = nearestOnSurface(a, wall, item, core.position, 1e-7 * radius);
+        const SurfaceNearest s = nearestOnSurface(a, wall, item, core.position, 1e-7 * radius, &cull);
         if (s.distance > a.cells.bounding_radius[c]) return clearItem(a.items, item);
         side = dot(core.position - s.point, s.pseudo_normal) < 0.0 ? -1.0 : 1.0;
     }
-    const int n = wallPatch(a, core, c, radius, side, wall, item, points, cores_intersect);
+    const int n = wallPatch(a, core, c, radius, side, wall, item, points, cores_intersect, &cull);
     if (n == 0) return clearItem(a.items, item);
     for (int i = 0; i < n; ++i)
         points[i].relative_velocity =
@@ -690,10 +772,16 @@ void runPairKernel(const PairKernelArgs& a)
     }
 }
 
+// An item against a triangulated liner searches tens to hundreds of candidate triangles per
+// core vertex, against one plane for a plate: the work is the candidate count, not the item
+// count (a few hundred cells on the liners of a crusher already fill two threads), and it is
+// uneven (an item out of reach returns after the centre's search), so the items are dealt
+// out dynamically. Each item writes its own slots: the result does not depend on the order.
 template <class Law>
 void runWallKernel(const WallKernelArgs& a)
 {
-#pragma omp parallel for schedule(static) if (a.n_items >= parallelMinimumItems())
+    const long work = a.n_items > 0 ? a.n_items + a.item_triangle_offset[a.n_items] : 0;
+#pragma omp parallel for schedule(dynamic, 8) if (work >= parallelMinimumItems())
     for (int item = 0; item < a.n_items; ++item) wallKernel<Law>(a, item);
 }
 

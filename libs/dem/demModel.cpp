@@ -637,6 +637,7 @@ int DemModel::addPlate(const Vec3& point, const Vec3& normal_into_domain, const 
     w.normal = normalised(normal_into_domain);
     w.velocity = velocity;
     walls_.push_back(w);
+    wall_extent_.push_back(0.0);
     triangle_grids_.emplace_back();
     lists_valid_ = forces_valid_ = false;
     return nWalls() - 1;
@@ -662,6 +663,9 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
     triangle_features_.insert(triangle_features_.end(), features.begin(), features.end());
     triangle_grids_.emplace_back(local);
     walls_.push_back(w);
+    double extent = 0.0;
+    for (const Vec3& v : local) extent = std::max(extent, norm(v));
+    wall_extent_.push_back(extent);
     setWallMotion(nWalls() - 1, motion);
     walls_.back().initial_origin = motion.translation;
     lists_valid_ = false;
@@ -907,15 +911,10 @@ bool DemModel::neighbourListsStale(double cell_move) const
 {
     if (!lists_valid_ || wall_origin_at_build_.size() != walls_.size()) return true;
     double wall_move = 0.0;
-    for (int w = 0; w < nWalls(); ++w) {
-        double extent = 0.0;
-        for (int t = 3 * walls_[w].first_triangle; t < 3 * (walls_[w].first_triangle + walls_[w].n_triangles);
-             ++t)
-            extent = std::max(extent, norm(triangle_vertices_[t]));
-        wall_move = std::max(
-            wall_move, norm(walls_[w].origin - wall_origin_at_build_[w]) +
-                           extent * rotationAngle(walls_[w].orientation, wall_orientation_at_build_[w]));
-    }
+    for (int w = 0; w < nWalls(); ++w)
+        wall_move = std::max(wall_move, norm(walls_[w].origin - wall_origin_at_build_[w]) +
+                                            wall_extent_[w] * rotationAngle(walls_[w].orientation,
+                                                                            wall_orientation_at_build_[w]));
     return cell_move > 0.5 * skin_ || cell_move + wall_move > skin_ || !(cell_move == cell_move);
 }
 

@@ -285,6 +285,7 @@ private:
     // Neighbour-list validity.
     std::vector<Vec3> position_at_build_;
     std::vector<Vec3> wall_origin_at_build_;
+    std::vector<double> wall_extent_;  // per wall: largest |vertex| in its frame (0 for plates)
     std::vector<Quat> wall_orientation_at_build_;
     int interfaces_cracked_at_build_ = 0;
     bool lists_valid_ = false;
