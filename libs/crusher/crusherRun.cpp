@@ -314,9 +314,11 @@ struct CrusherRun::Impl {
     std::string progressExtras() const
     {
         char buffer[200];
-        std::snprintf(buffer, sizeof(buffer), "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d",
+        // cut: contacts whose cores intersect in this step (deeper than the dilation radius:
+        // unresolved, docs/theory-dem.md §6); more than a few means the rocks are jammed.
+        std::snprintf(buffer, sizeof(buffer), "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d",
                       model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
-                      model->counters().bonds_broken);
+                      model->counters().bonds_broken, model->counters().core_intersections);
         return buffer;
     }
 };

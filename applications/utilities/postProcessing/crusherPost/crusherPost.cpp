@@ -84,7 +84,9 @@ int main(int argc, char** argv)
         if (t.size() < 2) throw UserError("machine.dat has fewer than two rows; run bondedDemFoam longer");
         std::vector<double> pressure(t.size()), throughput(t.size(), 0.0), steadyP, steadyPressure, steadyQ;
         for (std::size_t i = 0; i < t.size(); ++i) {
-            pressure[i] = fz[i] / pistonArea;
+            // forceZ is the force the rocks exert on the mantle: down (negative) when they
+            // press on it; the piston under the main shaft carries it, p = -F_z / A.
+            pressure[i] = -fz[i] / pistonArea;
             if (i > 0 && t[i] > t[i - 1]) throughput[i] = (out[i] - out[i - 1]) / (t[i] - t[i - 1]);
             if (t[i] >= steadyStart && i > 0) {
                 steadyP.push_back(power[i]);
