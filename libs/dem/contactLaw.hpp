@@ -173,9 +173,12 @@ struct PairKernelArgs {
     // Gap between the dilated surfaces at the last GJK call, less a bound on the
     // approach since: while positive the pair cannot touch and GJK is skipped.
     double* separation_margin = nullptr;
+    // The overlap a face neighbour's contact started at (its bonds' compression then),
+    // taken off every point's overlap; -1 while the pair is apart (docs/theory-dem.md §6).
+    double* seat = nullptr;
     ContactItemOutputs items;
     Vec3* force_on_b = nullptr;
-    Vec3* contact_point = nullptr;
+    Vec3* torque_on_b = nullptr;  // about b's centroid; the gather forms a's
     int block_size = 512;
     ContactBlockSums* block_sums = nullptr;  // one per block of block_size pairs (CPU runner)
 };
@@ -183,6 +186,7 @@ struct PairKernelArgs {
 // Where two dilated bodies touch: normal from A to B, overlap, contact point.
 struct ContactGeometry {
     Vec3 normal, point;
+    Vec3 point_a, point_b;  // the cores' closest points (separated cores)
     double overlap = 0.0;
     bool cores_intersect = false;
 };
@@ -212,17 +216,25 @@ RF_HD inline ContactGeometry coreGeometry(const ConvexVertexSet& A, const Convex
         return supportGeometry(A, B, fallback_normal, radius_a, radius_b);
     ContactGeometry g;
     g.normal = (gjk.point_b - gjk.point_a) / gjk.distance;
+    g.point_a = gjk.point_a;
+    g.point_b = gjk.point_b;
     g.overlap = scale - gjk.distance;
     g.point = 0.5 * (gjk.point_a + radius_a * g.normal + gjk.point_b - radius_b * g.normal);
     return g;
 }
+
+// Most points of one cell–cell patch; the deepest are kept beyond that.
+constexpr int max_pair_patch_points = 32;
+
+RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const ContactGeometry& g, double ra,
+                           double rb, PatchPoint* points);
 
 // Pair p; an active contact adds its energies to sums.
 template <class Law>
 RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& sums)
 {
     const int ca = a.cell_a[p], cb = a.cell_b[p];
-    a.force_on_b[p] = a.contact_point[p] = Vec3{};
+    a.force_on_b[p] = a.torque_on_b[p] = Vec3{};
     const CellContactView& cells = a.cells;
     const int iface = a.interface[p];
     // A pair whose bonds are all intact gets no contact force. The contact starts at the
@@ -233,7 +245,10 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         iface >= 0 && a.intact_bonds[iface] == a.bond_offset[iface + 1] - a.bond_offset[iface];
     const Vec3 between = cells.position[cb] - cells.position[ca];
     const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
-    if (bonded || norm2(between) > reach * reach) return clearItem(a.items, p);
+    if (bonded || norm2(between) > reach * reach) {
+        a.seat[p] = -1.0;
+        return clearItem(a.items, p);
+    }
     // Largest approach of the two surfaces during this step (x 1.25 for the change of
     // the velocities within the step): translation plus rotation of the far points.
     const double approach = 1.25 * a.dt *
@@ -241,27 +256,83 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
                              norm(cells.angular_velocity_world[ca]) * cells.bounding_radius[ca] +
                              norm(cells.angular_velocity_world[cb]) * cells.bounding_radius[cb]);
     a.separation_margin[p] -= approach;
-    if (a.separation_margin[p] > 0.0) return clearItem(a.items, p);
+    if (a.separation_margin[p] > 0.0) {
+        a.seat[p] = -1.0;
+        return clearItem(a.items, p);
+    }
     const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
     const Vec3 previous = a.items.last_normal[p];
     const Vec3 fallback = norm2(previous) > 0.0 ? previous : normalised(between);
     const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
     a.separation_margin[p] = g.overlap < 0.0 ? -g.overlap : 0.0;
-    if (!(g.overlap > 0.0)) return clearItem(a.items, p);
+    if (!(g.overlap > 0.0)) {
+        a.seat[p] = -1.0;
+        return clearItem(a.items, p);
+    }
     a.items.last_normal[p] = g.normal;
+    // The seat. A face neighbour's contact starts at its first broken bond, when its faces
+    // are pressed together by what the bonds carry (microns): the patch's Hertz springs
+    // would hold energy at once that nothing put in (with tens of points on a face, 0.75 J
+    // in a 20 J crushing test). So its overlaps are counted from the overlap at the start;
+    // the contact takes up what the face closes from then on (the compression the broken
+    // bonds carried is released with them, booked as fracture). While the faces open, the
+    // seat follows the overlap down, with every point's spring at zero: no energy jumps.
+    // Other pairs come into contact from apart and start at zero.
+    double& seat = a.seat[p];
+    if (seat < 0.0)
+        seat = iface >= 0 ? g.overlap : 0.0;
+    else if (g.overlap < seat)
+        seat = g.overlap;
+    const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
+    PatchPoint points[max_pair_patch_points];
+    int n_points = g.cores_intersect ? 0 : pairPatch(cells, ca, cb, g, ra, rb, points);
+    if (n_points > 0) {
+        int kept = 0;
+        for (int i = 0; i < n_points; ++i) {
+            points[i].overlap -= seat;
+            if (points[i].overlap > 0.0) points[kept++] = points[i];
+        }
+        if (kept == 0) return clearItem(a.items, p);  // seated, not pressed further yet
+        n_points = kept;
+    }
+    if (n_points > 0) {  // the patch of feature pairs (docs/theory-dem.md §6), as against a wall
+        for (int i = 0; i < n_points; ++i)
+            points[i].relative_velocity =
+                pointVelocity(cells, cb, points[i].point) - pointVelocity(cells, ca, points[i].point);
+        ContactPatchInput in;
+        in.points = points;
+        in.n_points = n_points;
+        in.centre = cells.position[cb];
+        in.effective_radius = ra * rb / (ra + rb);
+        in.effective_mass = cells.mass[ca] * cells.mass[cb] / (cells.mass[ca] + cells.mass[cb]);
+        in.dt = a.dt;
+        const ContactPatchOutput patch = Law::evaluatePatch(a.constants, in, a.items.tangential_spring[p]);
+        ContactOutput out;
+        out.force_on_b = patch.force;
+        out.elastic_energy = patch.elastic_energy;
+        out.damping_power = patch.damping_power;
+        out.friction_dissipation = patch.friction_dissipation;
+        storeItem(a.items, p, out, status);
+        sums.add(out, status);
+        a.force_on_b[p] = patch.force;
+        a.torque_on_b[p] = patch.torque;
+        return;
+    }
+    // Cores cut (the depth is not resolved: one point along the last normal), or no
+    // feature pair within reach (round-off at the edge of reach): GJK's single point.
+    if (!(g.overlap - seat > 0.0)) return clearItem(a.items, p);
     ContactInput in;
-    in.overlap = g.overlap;
+    in.overlap = g.overlap - seat;
     in.normal = g.normal;
     in.relative_velocity = pointVelocity(cells, cb, g.point) - pointVelocity(cells, ca, g.point);
     in.effective_radius = ra * rb / (ra + rb);
     in.effective_mass = cells.mass[ca] * cells.mass[cb] / (cells.mass[ca] + cells.mass[cb]);
     in.dt = a.dt;
     const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[p]);
-    const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
     storeItem(a.items, p, out, status);
     sums.add(out, status);
     a.force_on_b[p] = out.force_on_b;
-    a.contact_point[p] = g.point;  // the gather forms the torques about the two centroids
+    a.torque_on_b[p] = cross(g.point - cells.position[cb], out.force_on_b);
 }
 
 // A wall's pose at the current time: x_world = origin + rotation * x_local, and
@@ -412,6 +483,154 @@ constexpr double ridge_parallel_begin = 10.0 * 3.14159265358979323846 / 180.0;
 constexpr double ridge_parallel_full = 20.0 * 3.14159265358979323846 / 180.0;
 constexpr double cos_ridge_parallel_begin = 0.98480775301220805936;  // cos 10 degrees
 constexpr double cos_ridge_parallel_full = 0.93969262078590838405;   // cos 20 degrees
+
+// Add a point to a pair patch; when full, the shallowest point gives way to a deeper one.
+RF_HD inline void addPairPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
+{
+    if (n < max_pair_patch_points) {
+        points[n++] = p;
+        return;
+    }
+    int shallowest = 0;
+    for (int i = 1; i < n; ++i)
+        if (points[i].overlap < points[shallowest].overlap) shallowest = i;
+    if (p.overlap > points[shallowest].overlap) points[shallowest] = p;
+}
+
+// Most core edges of one cell that a pair patch looks at (those within reach of the other
+// core), and most core vertices of a cell with a pair patch (larger cores: the GJK point).
+constexpr int max_pair_patch_edges = 48;
+constexpr int max_pair_patch_vertices = 96;
+
+// The contact of two dilated cells as a patch of Hertz points (docs/theory-dem.md §6), the
+// cell–cell form of the wall patch: one point per pair of features within r_a + r_b,
+//  - every core vertex of either cell and the other core: the vertex's distance to that
+//    core (GJK of a point), normal from the nearest point to the vertex;
+//  - every core edge of A and core edge of B: the distance of the two segments, with the
+//    reach weighted by w(theta) of the angle between them (0 within 10 degrees of parallel,
+//    1 beyond 20, smooth between) exactly as a core edge against a ridge of a wall, the
+//    weight's own torque in torque_per_force (on B).
+// Each overlap is a continuous function of the two poses, zero when the pair comes into
+// reach, so the elastic forces derive from one potential and two faces lying on each other
+// are held at the corners of their common area, as a face on a plate: their torque follows
+// the tilt smoothly. A single GJK point (the contact before 2026-12-03) jumps from corner
+// to corner between two parallel faces, and a loaded face contact that rocks by a hair then
+// pumps energy into the pair (docs/theory-dem.md §6). Features are culled by the separating
+// plane GJK found between the cores: B lies beyond the plane through its closest point p_b
+// normal to n, A behind the one through p_a, so a feature of A farther than r_a + r_b
+// behind p_b's plane (or of B beyond p_a's) is out of reach. Normals point from A to B; the
+// torques the patch law forms are on B about its centroid. Returns the number of points.
+RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const ContactGeometry& g, double ra,
+                           double rb, PatchPoint* points)
+{
+    const double reach = ra + rb;
+    const double tolerance = 1e-9 * reach;
+    const ConvexVertexSet core_a = cellCore(cells, ca), core_b = cellCore(cells, cb);
+    if (core_a.n_vertices > max_pair_patch_vertices || core_b.n_vertices > max_pair_patch_vertices) return 0;
+    // World vertices and their height above the other core's supporting plane (GJK's
+    // separating planes: B lies beyond the plane through p_b normal to n, A behind the one
+    // through p_a), a lower bound of their distance from the other core.
+    Vec3 world_a[max_pair_patch_vertices], world_b[max_pair_patch_vertices];
+    double beyond_a[max_pair_patch_vertices], beyond_b[max_pair_patch_vertices];
+    const double plane_b = dot(g.point_b, g.normal), plane_a = dot(g.point_a, g.normal);
+    for (int v = 0; v < core_a.n_vertices; ++v) {
+        world_a[v] = worldVertex(core_a, v);
+        beyond_a[v] = plane_b - dot(world_a[v], g.normal);
+    }
+    for (int v = 0; v < core_b.n_vertices; ++v) {
+        world_b[v] = worldVertex(core_b, v);
+        beyond_b[v] = dot(world_b[v], g.normal) - plane_a;
+    }
+    int n = 0;
+    // Vertices of each core against the other.
+    for (int side = 0; side < 2; ++side) {
+        const ConvexVertexSet& own = side == 0 ? core_a : core_b;
+        const ConvexVertexSet& other = side == 0 ? core_b : core_a;
+        const Vec3* world = side == 0 ? world_a : world_b;
+        const double* beyond = side == 0 ? beyond_a : beyond_b;
+        for (int v = 0; v < own.n_vertices; ++v) {
+            if (beyond[v] >= reach) continue;
+            const Vec3 x = world[v];
+            const Vec3 origin{};
+            ConvexVertexSet vertex;
+            vertex.vertices = &origin;
+            vertex.n_vertices = 1;
+            vertex.position = x;
+            const GjkResult gjk = gjkDistance(vertex, other, x - other.position);
+            if (gjk.intersecting || !(gjk.distance > tolerance)) continue;  // cores cut: not here
+            PatchPoint pt;
+            pt.overlap = reach - gjk.distance;
+            if (!(pt.overlap > 0.0)) continue;
+            const Vec3 towards_other = (gjk.point_b - gjk.point_a) / gjk.distance;
+            pt.normal = side == 0 ? towards_other : -1.0 * towards_other;
+            const Vec3 on_a = side == 0 ? x : gjk.point_b;
+            pt.point = on_a + (0.5 * (ra + gjk.distance - rb)) * pt.normal;
+            addPairPatchPoint(points, n, pt);
+        }
+    }
+    // Edge pairs among the edges of each core within reach of the other core (an edge is in
+    // reach only if one of its ends is: the plane bound is linear along it).
+    unsigned short near_a[max_pair_patch_edges], near_b[max_pair_patch_edges];
+    Vec3 direction_a[max_pair_patch_edges], direction_b[max_pair_patch_edges];
+    int n_near_a = 0, n_near_b = 0;
+    const unsigned char* edges_a = cells.core_edges + cells.core_edge_offset[ca];
+    const unsigned char* edges_b = cells.core_edges + cells.core_edge_offset[cb];
+    const int n_edges_a = (cells.core_edge_offset[ca + 1] - cells.core_edge_offset[ca]) / 2;
+    const int n_edges_b = (cells.core_edge_offset[cb + 1] - cells.core_edge_offset[cb]) / 2;
+    for (int e = 0; e < n_edges_a && n_near_a < max_pair_patch_edges; ++e) {
+        const int i0 = edges_a[2 * e], i1 = edges_a[2 * e + 1];
+        if ((beyond_a[i0] < beyond_a[i1] ? beyond_a[i0] : beyond_a[i1]) >= reach) continue;
+        direction_a[n_near_a] = normalised(world_a[i1] - world_a[i0]);
+        near_a[n_near_a++] = static_cast<unsigned short>(e);
+    }
+    for (int e = 0; e < n_edges_b && n_near_b < max_pair_patch_edges; ++e) {
+        const int i0 = edges_b[2 * e], i1 = edges_b[2 * e + 1];
+        if ((beyond_b[i0] < beyond_b[i1] ? beyond_b[i0] : beyond_b[i1]) >= reach) continue;
+        direction_b[n_near_b] = normalised(world_b[i1] - world_b[i0]);
+        near_b[n_near_b++] = static_cast<unsigned short>(e);
+    }
+    for (int i = 0; i < n_near_a; ++i) {
+        const Vec3 a0 = world_a[edges_a[2 * near_a[i]]], a1 = world_a[edges_a[2 * near_a[i] + 1]];
+        const Vec3 ridge = direction_a[i];  // A's edge plays the wall's ridge
+        const Vec3 middle_a = 0.5 * (a0 + a1);
+        const double half_a = 0.5 * norm(a1 - a0);
+        for (int j = 0; j < n_near_b; ++j) {
+            const Vec3 b0 = world_b[edges_b[2 * near_b[j]]], b1 = world_b[edges_b[2 * near_b[j] + 1]];
+            const Vec3 along = direction_b[j];
+            const double cosine = dot(along, ridge);
+            const double abs_cosine = cosine < 0.0 ? -cosine : cosine;
+            if (!(abs_cosine < cos_ridge_parallel_begin)) continue;
+            // The segments' bounding spheres apart by the reach: out of reach.
+            const double apart = norm(0.5 * (b0 + b1) - middle_a) - half_a - 0.5 * norm(b1 - b0);
+            if (apart >= reach) continue;
+            const Vec3 binormal = cross(along, ridge);
+            double weight = 1.0, weight_slope = 0.0;
+            if (abs_cosine > cos_ridge_parallel_full) {
+                const double angle = std::atan2(norm(binormal), abs_cosine);
+                const double width = ridge_parallel_full - ridge_parallel_begin;
+                double u = (angle - ridge_parallel_begin) / width;
+                u = u < 0.0 ? 0.0 : u;
+                weight = u * u * (3.0 - 2.0 * u);
+                weight_slope = 6.0 * u * (1.0 - u) / width;
+            }
+            Vec3 on_a, on_b;
+            closestPointsOfSegments(a0, a1, b0, b1, on_a, on_b);
+            const Vec3 gap = on_b - on_a;
+            const double distance = norm(gap);
+            PatchPoint pt;
+            pt.overlap = weight * reach - distance;
+            if (!(pt.overlap > 0.0) || !(distance > tolerance)) continue;
+            pt.normal = gap / distance;
+            // The weight's torque on B, as for a core edge against a ridge (wallPatch).
+            if (weight_slope > 0.0)
+                pt.torque_per_force =
+                    (reach * weight_slope * (cosine < 0.0 ? -1.0 : 1.0) / norm(binormal)) * binormal;
+            pt.point = on_a + (0.5 * (ra + distance - rb)) * pt.normal;
+            addPairPatchPoint(points, n, pt);
+        }
+    }
+    return n;
+}
 
 // Bits of triangle_features: edge k (from corner k to corner k+1) is a ridge seen from
 // the winding side (+1) or the other side (-1); corner k is a convex vertex seen from

@@ -531,8 +531,9 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(p.tangential_spring, keep_pair);
     keepFlagged(p.last_normal, keep_pair);
     keepFlagged(p.separation_margin, keep_pair);
+    keepFlagged(p.seat, keep_pair);
     keepFlagged(p.force_on_b, keep_pair);
-    keepFlagged(p.contact_point, keep_pair);
+    keepFlagged(p.torque_on_b, keep_pair);
     keepFlagged(p.status, keep_pair);
     WallContactArrays& w = wall_items_;
     std::vector<char> keep_item(w.size());
@@ -927,6 +928,7 @@ void DemModel::rebuildNeighbourLists()
     for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->reserve(near.size());
     next.tangential_spring.reserve(near.size());
     next.last_normal.reserve(near.size());
+    next.seat.reserve(near.size());
     std::size_t old = 0;
     for (const auto& [a, b] : near) {
         // The interface of the pair, if it shares a bonded face. Pairs whose every bond
@@ -949,16 +951,18 @@ void DemModel::rebuildNeighbourLists()
         const bool kept = old < pairs_.cell_a.size() && pairs_.cell_a[old] == a && pairs_.cell_b[old] == b;
         next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
         next.last_normal.push_back(kept ? pairs_.last_normal[old] : Vec3{});
+        next.seat.push_back(kept && old < pairs_.seat.size() ? pairs_.seat[old] : -1.0);
     }
     // Most near pairs are still bonded and left out: give back what was reserved for them
     // (about half the contact pairs' memory in an intact specimen).
     for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->shrink_to_fit();
     next.tangential_spring.shrink_to_fit();
     next.last_normal.shrink_to_fit();
+    next.seat.shrink_to_fit();
     const std::size_t m = next.cell_a.size();
     next.separation_margin.assign(m, 0.0);
     next.force_on_b.assign(m, Vec3{});
-    next.contact_point.assign(m, Vec3{});
+    next.torque_on_b.assign(m, Vec3{});
     next.status.assign(m, contactNone);
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
@@ -1175,11 +1179,12 @@ void DemModel::runContactKernels(double dt)
     pa.cell_b = pairs_.cell_b.data();
     pa.interface = pairs_.interface.data();
     pa.separation_margin = pairs_.separation_margin.data();
+    pa.seat = pairs_.seat.data();
     pa.items.tangential_spring = pairs_.tangential_spring.data();
     pa.items.last_normal = pairs_.last_normal.data();
     pa.items.status = pairs_.status.data();  // energies: block sums
     pa.force_on_b = pairs_.force_on_b.data();
-    pa.contact_point = pairs_.contact_point.data();
+    pa.torque_on_b = pairs_.torque_on_b.data();
     pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
     pa.block_sums = pair_block_sums_.data();
     contact_runners_.pairs(pa);
@@ -1248,7 +1253,8 @@ GatherArgs DemModel::gatherArgs()
     a.pair_offset = cell_pair_offset_.data();
     a.pair_entries = cell_pairs_.data();
     a.pair_force_on_b = pairs_.force_on_b.data();
-    a.pair_contact_point = pairs_.contact_point.data();
+    a.pair_torque_on_b = pairs_.torque_on_b.data();
+    a.pair_cell_b = pairs_.cell_b.data();
     a.position = cells_.position.data();
     a.wall_item_offset = cell_wall_item_offset_.data();
     a.wall_force_on_cell = wall_items_.force_on_cell.data();
@@ -1644,8 +1650,8 @@ DemMemoryBytes DemModel::memoryUse() const
     m.softening = bytes(b.softening);
     const ContactPairArrays& p = pairs_;
     m.pairs = bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
-              bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.force_on_b) +
-              bytes(p.contact_point) + bytes(p.status);
+              bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.seat) + bytes(p.force_on_b) +
+              bytes(p.torque_on_b) + bytes(p.status);
     const WallContactArrays& w = wall_items_;
     m.wall_items = bytes(w.cell) + bytes(w.wall) + bytes(w.triangle_offset) + bytes(w.triangles) +
                    bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +

@@ -97,8 +97,9 @@ struct ContactPairArrays {
     std::vector<int> cell_a, cell_b, interface;
     std::vector<Vec3> tangential_spring, last_normal;  // history, carried across rebuilds by (a, b)
     std::vector<double> separation_margin;             // GJK skipping (reset at rebuilds)
-    std::vector<Vec3> force_on_b;                      // on cell b (a gets the opposite) [N]
-    std::vector<Vec3> contact_point;    // where it acts, world [m] (the gather forms the torques)
+    std::vector<double> seat;           // overlap a face neighbour's contact started at; -1 apart (carried)
+    std::vector<Vec3> force_on_b;       // on cell b (a gets the opposite) [N]
+    std::vector<Vec3> torque_on_b;      // on cell b about its centroid [N m] (the gather forms a's)
     std::vector<unsigned char> status;  // ContactStatus (energies: summed per block, not stored)
 
     int size() const { return static_cast<int>(cell_a.size()); }

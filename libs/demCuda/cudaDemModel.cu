@@ -333,8 +333,8 @@ struct CudaDemModel::Buffers {
     DeviceArray<int> cell_interface_offset, cell_interfaces;
     // Contact pairs.
     DeviceArray<int> pair_a, pair_b, pair_interface, cell_pair_offset, cell_pairs;
-    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_contact_point;
-    DeviceArray<double> pair_margin;
+    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_torque_on_b;
+    DeviceArray<double> pair_margin, pair_seat;
     DeviceArray<unsigned char> pair_status;
     // Wall items and walls.
     DeviceArray<int> item_cell, item_wall, item_triangle_offset, item_triangles, cell_wall_item_offset;
@@ -402,8 +402,9 @@ struct CudaDemModel::Buffers {
                               pair_spring.bytes(),
                               pair_last_normal.bytes(),
                               pair_force_on_b.bytes(),
-                              pair_contact_point.bytes(),
+                              pair_torque_on_b.bytes(),
                               pair_margin.bytes(),
+                              pair_seat.bytes(),
                               pair_status.bytes(),
                               item_cell.bytes(),
                               item_wall.bytes(),
@@ -524,8 +525,8 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
     total += arrayBytes(host.cell_interface_offset_) + arrayBytes(host.cell_interfaces_);
     const ContactPairArrays& p = host.pairs_;
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
-             arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) +
-             arrayBytes(p.force_on_b) + arrayBytes(p.contact_point) + arrayBytes(p.status) +
+             arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) + arrayBytes(p.seat) +
+             arrayBytes(p.force_on_b) + arrayBytes(p.torque_on_b) + arrayBytes(p.status) +
              arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
     total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
@@ -610,8 +611,9 @@ void CudaDemModel::uploadLists()
     d.pair_spring.upload(p.tangential_spring);
     d.pair_last_normal.upload(p.last_normal);
     d.pair_margin.upload(p.separation_margin);
+    d.pair_seat.upload(p.seat);
     d.pair_force_on_b.upload(p.force_on_b);
-    d.pair_contact_point.upload(p.contact_point);
+    d.pair_torque_on_b.upload(p.torque_on_b);
     d.pair_status.upload(p.status);
     d.cell_pair_offset.upload(host_.cell_pair_offset_);
     d.cell_pairs.upload(host_.cell_pairs_);
@@ -676,8 +678,9 @@ void CudaDemModel::downloadState()
     d.pair_spring.download(p.tangential_spring);
     d.pair_last_normal.download(p.last_normal);
     d.pair_margin.download(p.separation_margin);
+    d.pair_seat.download(p.seat);
     d.pair_force_on_b.download(p.force_on_b);
-    d.pair_contact_point.download(p.contact_point);
+    d.pair_torque_on_b.download(p.torque_on_b);
     d.pair_status.download(p.status);
     WallContactArrays& w = host_.wall_items_;
     d.item_spring.download(w.tangential_spring);
@@ -794,10 +797,11 @@ void CudaDemModel::computeForces(double dt)
     pa.cell_b = d.pair_b.data();
     pa.interface = d.pair_interface.data();
     pa.separation_margin = d.pair_margin.data();
+    pa.seat = d.pair_seat.data();
     pa.items = {d.pair_spring.data(), d.pair_last_normal.data(), nullptr, nullptr, nullptr,
                 d.pair_status.data()};  // energies: summed per thread, not stored
     pa.force_on_b = d.pair_force_on_b.data();
-    pa.contact_point = d.pair_contact_point.data();
+    pa.torque_on_b = d.pair_torque_on_b.data();
     const int pair_blocks = blocksFor(pa.n_pairs);
     if (pair_blocks > 0)
         pairKernelCuda<ContactLawOnDevice><<<pair_blocks, threads_per_block>>>(pa, d.pair_sums.data());
@@ -874,7 +878,8 @@ void CudaDemModel::computeForces(double dt)
     ga.pair_offset = d.cell_pair_offset.data();
     ga.pair_entries = d.cell_pairs.data();
     ga.pair_force_on_b = d.pair_force_on_b.data();
-    ga.pair_contact_point = d.pair_contact_point.data();
+    ga.pair_torque_on_b = d.pair_torque_on_b.data();
+    ga.pair_cell_b = d.pair_b.data();
     ga.position = d.position.data();
     ga.wall_item_offset = d.cell_wall_item_offset.data();
     ga.wall_force_on_cell = d.item_force.data();
