@@ -33,7 +33,10 @@ struct GatherArgs {
     const int* pair_offset = nullptr;
     const int* pair_entries = nullptr;
     const Vec3* pair_force_on_b = nullptr;
-    const Vec3* pair_torque_on_b = nullptr;  // on cell b about its centroid
+    // Per pair: its contact point (point contacts) or the torque on b about its centroid
+    // (patch contacts, pair_torques), see PairKernelArgs::point_or_torque.
+    const Vec3* pair_point_or_torque = nullptr;
+    bool pair_torques = false;
     const int* pair_cell_b = nullptr;
     const Vec3* position = nullptr;
     const int* wall_item_offset = nullptr;  // wall items are sorted by cell: a range per cell
@@ -60,16 +63,29 @@ RF_HD inline void gatherCellForces(const GatherArgs& a, int c)
     }
     for (int e = a.pair_offset[c]; e < a.pair_offset[c + 1]; ++e) {
         const int p = a.pair_entries[e] >> 1;
-        // A pair stores the force and torque on b (not a's too: 24 bytes less per pair);
-        // a's follows from the balance of the pair's internal forces: about a's centroid
-        // the opposite forces give -T_b - (x_b - x_a) x F_b.
+        if (a.pair_torques) {
+            // A patch stores the force and torque on b (not a's too: 24 bytes less per
+            // pair); a's follows from the balance of the pair's internal forces: about a's
+            // centroid the opposite forces give -T_b - (x_b - x_a) x F_b.
+            if (a.pair_entries[e] & 1) {
+                force += a.pair_force_on_b[p];
+                torque += a.pair_point_or_torque[p];
+            } else {
+                const Vec3 arm = a.position[a.pair_cell_b[p]] - a.position[c];
+                force -= a.pair_force_on_b[p];
+                torque += -1.0 * a.pair_point_or_torque[p] - cross(arm, a.pair_force_on_b[p]);
+            }
+            continue;
+        }
+        // A point contact stores its force and contact point (not two torques: 24 bytes
+        // less per pair); the torque is formed here as the pair kernel would have formed it.
+        const Vec3 arm = a.pair_point_or_torque[p] - a.position[c];
         if (a.pair_entries[e] & 1) {
             force += a.pair_force_on_b[p];
-            torque += a.pair_torque_on_b[p];
+            torque += cross(arm, a.pair_force_on_b[p]);
         } else {
-            const Vec3 arm = a.position[a.pair_cell_b[p]] - a.position[c];
             force -= a.pair_force_on_b[p];
-            torque += -1.0 * a.pair_torque_on_b[p] - cross(arm, a.pair_force_on_b[p]);
+            torque += -cross(arm, a.pair_force_on_b[p]);
         }
     }
     for (int i = a.wall_item_offset[c]; i < a.wall_item_offset[c + 1]; ++i) {

@@ -177,8 +177,12 @@ struct PairKernelArgs {
     // taken off every point's overlap; -1 while the pair is apart (docs/theory-dem.md §6).
     double* seat = nullptr;
     ContactItemOutputs items;
+    // The patch contact (true) or the single GJK point (false, the paper's contact).
+    bool patch = false;
     Vec3* force_on_b = nullptr;
-    Vec3* torque_on_b = nullptr;  // about b's centroid; the gather forms a's
+    // Point contact: where the force acts; patch: the torque on b about its centroid. The
+    // gather forms the two cells' torques from it (GatherArgs::pair_torques).
+    Vec3* point_or_torque = nullptr;
     int block_size = 512;
     ContactBlockSums* block_sums = nullptr;  // one per block of block_size pairs (CPU runner)
 };
@@ -234,7 +238,7 @@ template <class Law>
 RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& sums)
 {
     const int ca = a.cell_a[p], cb = a.cell_b[p];
-    a.force_on_b[p] = a.torque_on_b[p] = Vec3{};
+    a.force_on_b[p] = a.point_or_torque[p] = Vec3{};
     const CellContactView& cells = a.cells;
     const int iface = a.interface[p];
     // A pair whose bonds are all intact gets no contact force. The contact starts at the
@@ -246,7 +250,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     const Vec3 between = cells.position[cb] - cells.position[ca];
     const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
     if (bonded || norm2(between) > reach * reach) {
-        a.seat[p] = -1.0;
+        if (a.patch) a.seat[p] = -1.0;
         return clearItem(a.items, p);
     }
     // Largest approach of the two surfaces during this step (x 1.25 for the change of
@@ -257,7 +261,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
                              norm(cells.angular_velocity_world[cb]) * cells.bounding_radius[cb]);
     a.separation_margin[p] -= approach;
     if (a.separation_margin[p] > 0.0) {
-        a.seat[p] = -1.0;
+        if (a.patch) a.seat[p] = -1.0;
         return clearItem(a.items, p);
     }
     const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
@@ -266,7 +270,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
     a.separation_margin[p] = g.overlap < 0.0 ? -g.overlap : 0.0;
     if (!(g.overlap > 0.0)) {
-        a.seat[p] = -1.0;
+        if (a.patch) a.seat[p] = -1.0;
         return clearItem(a.items, p);
     }
     a.items.last_normal[p] = g.normal;
@@ -278,14 +282,17 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     // bonds carried is released with them, booked as fracture). While the faces open, the
     // seat follows the overlap down, with every point's spring at zero: no energy jumps.
     // Other pairs come into contact from apart and start at zero.
-    double& seat = a.seat[p];
-    if (seat < 0.0)
-        seat = iface >= 0 ? g.overlap : 0.0;
-    else if (g.overlap < seat)
-        seat = g.overlap;
+    double no_seat = 0.0;
+    double& seat = a.patch ? a.seat[p] : no_seat;
+    if (a.patch) {
+        if (seat < 0.0)
+            seat = iface >= 0 ? g.overlap : 0.0;
+        else if (g.overlap < seat)
+            seat = g.overlap;
+    }
     const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
     PatchPoint points[max_pair_patch_points];
-    int n_points = g.cores_intersect ? 0 : pairPatch(cells, ca, cb, g, ra, rb, points);
+    int n_points = a.patch && !g.cores_intersect ? pairPatch(cells, ca, cb, g, ra, rb, points) : 0;
     if (n_points > 0) {
         int kept = 0;
         for (int i = 0; i < n_points; ++i) {
@@ -315,12 +322,12 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         storeItem(a.items, p, out, status);
         sums.add(out, status);
         a.force_on_b[p] = patch.force;
-        a.torque_on_b[p] = patch.torque;
+        a.point_or_torque[p] = patch.torque;
         return;
     }
     // Cores cut (the depth is not resolved: one point along the last normal), or no
     // feature pair within reach (round-off at the edge of reach): GJK's single point.
-    if (!(g.overlap - seat > 0.0)) return clearItem(a.items, p);
+    if (a.patch && !(g.overlap - seat > 0.0)) return clearItem(a.items, p);
     ContactInput in;
     in.overlap = g.overlap - seat;
     in.normal = g.normal;
@@ -332,7 +339,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     storeItem(a.items, p, out, status);
     sums.add(out, status);
     a.force_on_b[p] = out.force_on_b;
-    a.torque_on_b[p] = cross(g.point - cells.position[cb], out.force_on_b);
+    a.point_or_torque[p] = a.patch ? cross(g.point - cells.position[cb], out.force_on_b) : g.point;
 }
 
 // A wall's pose at the current time: x_world = origin + rotation * x_local, and

@@ -533,7 +533,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(p.separation_margin, keep_pair);
     keepFlagged(p.seat, keep_pair);
     keepFlagged(p.force_on_b, keep_pair);
-    keepFlagged(p.torque_on_b, keep_pair);
+    keepFlagged(p.point_or_torque, keep_pair);
     keepFlagged(p.status, keep_pair);
     WallContactArrays& w = wall_items_;
     std::vector<char> keep_item(w.size());
@@ -962,7 +962,7 @@ void DemModel::rebuildNeighbourLists()
     const std::size_t m = next.cell_a.size();
     next.separation_margin.assign(m, 0.0);
     next.force_on_b.assign(m, Vec3{});
-    next.torque_on_b.assign(m, Vec3{});
+    next.point_or_torque.assign(m, Vec3{});
     next.status.assign(m, contactNone);
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
@@ -1184,7 +1184,8 @@ void DemModel::runContactKernels(double dt)
     pa.items.last_normal = pairs_.last_normal.data();
     pa.items.status = pairs_.status.data();  // energies: block sums
     pa.force_on_b = pairs_.force_on_b.data();
-    pa.torque_on_b = pairs_.torque_on_b.data();
+    pa.point_or_torque = pairs_.point_or_torque.data();
+    pa.patch = parameters_.cell_contact_patch;
     pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
     pa.block_sums = pair_block_sums_.data();
     contact_runners_.pairs(pa);
@@ -1253,7 +1254,8 @@ GatherArgs DemModel::gatherArgs()
     a.pair_offset = cell_pair_offset_.data();
     a.pair_entries = cell_pairs_.data();
     a.pair_force_on_b = pairs_.force_on_b.data();
-    a.pair_torque_on_b = pairs_.torque_on_b.data();
+    a.pair_point_or_torque = pairs_.point_or_torque.data();
+    a.pair_torques = parameters_.cell_contact_patch;
     a.pair_cell_b = pairs_.cell_b.data();
     a.position = cells_.position.data();
     a.wall_item_offset = cell_wall_item_offset_.data();
@@ -1651,7 +1653,7 @@ DemMemoryBytes DemModel::memoryUse() const
     const ContactPairArrays& p = pairs_;
     m.pairs = bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
               bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.seat) + bytes(p.force_on_b) +
-              bytes(p.torque_on_b) + bytes(p.status);
+              bytes(p.point_or_torque) + bytes(p.status);
     const WallContactArrays& w = wall_items_;
     m.wall_items = bytes(w.cell) + bytes(w.wall) + bytes(w.triangle_offset) + bytes(w.triangles) +
                    bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +

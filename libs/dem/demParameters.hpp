@@ -53,6 +53,10 @@ struct DemParameters {
 
     // Contacts (Hertz–Mindlin, Table 2).
     std::string contact_law = "hertzMindlin";
+    // Cell–cell contact: false = one Hertz point at the GJK closest points of the cores (the
+    // paper's); true = a patch of feature pairs, seated at a face neighbour's first broken
+    // bond, which keeps the energy of pressed fragments (docs/theory-dem.md §6).
+    bool cell_contact_patch = false;
     double rock_rock_friction = 0.6;
     double rock_rock_restitution = 0.15;
     double rock_steel_friction = 0.95;

@@ -99,7 +99,7 @@ struct ContactPairArrays {
     std::vector<double> separation_margin;             // GJK skipping (reset at rebuilds)
     std::vector<double> seat;           // overlap a face neighbour's contact started at; -1 apart (carried)
     std::vector<Vec3> force_on_b;       // on cell b (a gets the opposite) [N]
-    std::vector<Vec3> torque_on_b;      // on cell b about its centroid [N m] (the gather forms a's)
+    std::vector<Vec3> point_or_torque;  // contact point [m] (point) or torque on b [N m] (patch)
     std::vector<unsigned char> status;  // ContactStatus (energies: summed per block, not stored)
 
     int size() const { return static_cast<int>(cell_a.size()); }

@@ -36,26 +36,19 @@ struct HertzMindlinLaw {
 
         // The stored spring is turned into the current tangent plane (magnitude kept),
         // then incremented by -S_t times the tangential slip of this step.
-        Vec3 spring = tangential_spring;
-        const double out_of_plane = dot(spring, n);
-        if (out_of_plane * out_of_plane > 1e-26 * norm2(spring)) {  // (in the plane already: kept bitwise)
-            spring -= out_of_plane * n;
-            const double kept = norm(spring);
-            if (kept > 0.0) spring *= norm(tangential_spring) / kept;
-        }
+        Vec3 spring = tangential_spring - dot(tangential_spring, n) * n;
+        const double kept = norm(spring);
+        if (kept > 0.0) spring *= norm(tangential_spring) / kept;
         spring -= (tangential_stiffness * in.dt) * tangential_velocity;
         Vec3 tangential_force = spring - tangential_damping * tangential_velocity;
         const double limit = k.friction * normal_force;
         const double spring_magnitude = norm(spring);
-        // At the cap (to round-off) the contact slides: a spring left exactly at mu F_n by the
-        // last cap, evaluated again, gives the same force (no dashpot switched back on).
-        if (spring_magnitude > limit * (1.0 - 1e-12)) {
+        if (spring_magnitude > limit) {
             // Sliding: the spring is capped at mu F_n; the excess slip dissipates mu F_n per metre.
-            if (spring_magnitude > limit) {  // (a spring at the cap is left as it is)
-                if (tangential_stiffness > 0.0)
-                    out.friction_dissipation = limit * (spring_magnitude - limit) / tangential_stiffness;
-                spring *= limit / spring_magnitude;
-            }
+            const double capped = spring_magnitude > 0.0 ? limit / spring_magnitude : 0.0;
+            if (tangential_stiffness > 0.0)
+                out.friction_dissipation = limit * (spring_magnitude - limit) / tangential_stiffness;
+            spring *= capped;
             tangential_force = spring;
         } else {
             out.damping_power += tangential_damping * norm2(tangential_velocity);
@@ -116,22 +109,17 @@ struct HertzMindlinLaw {
         const double tangential_damping =
             damping_factor * std::sqrt(tangential_stiffness * in.effective_mass);
         const Vec3 tangential_velocity = velocity - dot(velocity, n) * n;
-        Vec3 spring = tangential_spring;
-        const double out_of_plane = dot(spring, n);
-        if (out_of_plane * out_of_plane > 1e-26 * norm2(spring)) {  // (in the plane already: kept bitwise)
-            spring -= out_of_plane * n;
-            const double kept = norm(spring);
-            if (kept > 0.0) spring *= norm(tangential_spring) / kept;
-        }
+        Vec3 spring = tangential_spring - dot(tangential_spring, n) * n;
+        const double kept = norm(spring);
+        if (kept > 0.0) spring *= norm(tangential_spring) / kept;
         spring -= (tangential_stiffness * in.dt) * tangential_velocity;
         Vec3 tangential_force = spring - tangential_damping * tangential_velocity;
         const double limit = k.friction * normal_total;
         const double spring_magnitude = norm(spring);
-        if (spring_magnitude > limit * (1.0 - 1e-12)) {  // sliding, as in evaluate()
-            if (spring_magnitude > limit) {
-                out.friction_dissipation = limit * (spring_magnitude - limit) / tangential_stiffness;
-                spring *= limit / spring_magnitude;
-            }
+        if (spring_magnitude > limit) {
+            const double capped = spring_magnitude > 0.0 ? limit / spring_magnitude : 0.0;
+            out.friction_dissipation = limit * (spring_magnitude - limit) / tangential_stiffness;
+            spring *= capped;
             tangential_force = spring;
         } else {
             out.damping_power += tangential_damping * norm2(tangential_velocity);

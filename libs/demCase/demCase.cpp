@@ -54,6 +54,9 @@ DemParameters readDemParameters(const Dictionary& d)
 
     const Dictionary& contact = d.subDict("contact");
     p.contact_law = contact.getWord("model", contactLawNames());
+    // Optional: how two cells touch (point: the paper's single Hertz point; patch: feature pairs).
+    p.cell_contact_patch =
+        contact.found("cellContact") && contact.getWord("cellContact", {"point", "patch"}) == "patch";
     const Dictionary& rockRock = contact.subDict("rockRock");
     p.rock_rock_friction = rockRock.getScalar("friction", Bounds::nonNegative());
     p.rock_rock_restitution = rockRock.getScalar("restitution", Bounds::open(0, 1.000001));

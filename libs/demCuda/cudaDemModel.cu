@@ -333,7 +333,7 @@ struct CudaDemModel::Buffers {
     DeviceArray<int> cell_interface_offset, cell_interfaces;
     // Contact pairs.
     DeviceArray<int> pair_a, pair_b, pair_interface, cell_pair_offset, cell_pairs;
-    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_torque_on_b;
+    DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_point_or_torque;
     DeviceArray<double> pair_margin, pair_seat;
     DeviceArray<unsigned char> pair_status;
     // Wall items and walls.
@@ -402,7 +402,7 @@ struct CudaDemModel::Buffers {
                               pair_spring.bytes(),
                               pair_last_normal.bytes(),
                               pair_force_on_b.bytes(),
-                              pair_torque_on_b.bytes(),
+                              pair_point_or_torque.bytes(),
                               pair_margin.bytes(),
                               pair_seat.bytes(),
                               pair_status.bytes(),
@@ -526,7 +526,7 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
     const ContactPairArrays& p = host.pairs_;
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
              arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) + arrayBytes(p.seat) +
-             arrayBytes(p.force_on_b) + arrayBytes(p.torque_on_b) + arrayBytes(p.status) +
+             arrayBytes(p.force_on_b) + arrayBytes(p.point_or_torque) + arrayBytes(p.status) +
              arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
     total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
@@ -613,7 +613,7 @@ void CudaDemModel::uploadLists()
     d.pair_margin.upload(p.separation_margin);
     d.pair_seat.upload(p.seat);
     d.pair_force_on_b.upload(p.force_on_b);
-    d.pair_torque_on_b.upload(p.torque_on_b);
+    d.pair_point_or_torque.upload(p.point_or_torque);
     d.pair_status.upload(p.status);
     d.cell_pair_offset.upload(host_.cell_pair_offset_);
     d.cell_pairs.upload(host_.cell_pairs_);
@@ -680,7 +680,7 @@ void CudaDemModel::downloadState()
     d.pair_margin.download(p.separation_margin);
     d.pair_seat.download(p.seat);
     d.pair_force_on_b.download(p.force_on_b);
-    d.pair_torque_on_b.download(p.torque_on_b);
+    d.pair_point_or_torque.download(p.point_or_torque);
     d.pair_status.download(p.status);
     WallContactArrays& w = host_.wall_items_;
     d.item_spring.download(w.tangential_spring);
@@ -801,7 +801,8 @@ void CudaDemModel::computeForces(double dt)
     pa.items = {d.pair_spring.data(), d.pair_last_normal.data(), nullptr, nullptr, nullptr,
                 d.pair_status.data()};  // energies: summed per thread, not stored
     pa.force_on_b = d.pair_force_on_b.data();
-    pa.torque_on_b = d.pair_torque_on_b.data();
+    pa.point_or_torque = d.pair_point_or_torque.data();
+    pa.patch = host_.parameters_.cell_contact_patch;
     const int pair_blocks = blocksFor(pa.n_pairs);
     if (pair_blocks > 0)
         pairKernelCuda<ContactLawOnDevice><<<pair_blocks, threads_per_block>>>(pa, d.pair_sums.data());
@@ -878,7 +879,8 @@ void CudaDemModel::computeForces(double dt)
     ga.pair_offset = d.cell_pair_offset.data();
     ga.pair_entries = d.cell_pairs.data();
     ga.pair_force_on_b = d.pair_force_on_b.data();
-    ga.pair_torque_on_b = d.pair_torque_on_b.data();
+    ga.pair_point_or_torque = d.pair_point_or_torque.data();
+    ga.pair_torques = host_.parameters_.cell_contact_patch;
     ga.pair_cell_b = d.pair_b.data();
     ga.position = d.position.data();
     ga.wall_item_offset = d.cell_wall_item_offset.data();

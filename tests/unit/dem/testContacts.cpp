@@ -138,6 +138,57 @@ TEST_CASE(
     CHECK(bond_force > 0.0);
     const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
                                            p.rock_poisson_ratio);
+    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(overlap, 1.5);
+
+    // One bond broken: a face that has lost some of its bonds can hinge on the rest and close
+    // where they are gone, so its contact is on already (not started at the last bond with
+    // whatever overlap the hinging made). The bonds left carry (n - 1)/n of the compression.
+    BondArrays broken = model.bonds();
+    REQUIRE(broken.stage.size() >= 2);
+    const double n = static_cast<double>(broken.stage.size());
+    broken.stage[0] = bondBroken;
+    broken.damage[0] = 1.0;
+    model.setBondHistory(broken);
+    test::evaluateForces(model, 0.0);
+    CHECK(model.counters().interfaces_cracked == 1);
+    CHECK(model.counters().interfaces_open == 0);
+    CHECK(model.counters().contacts_active == 1);
+    CHECK(model.cells().force[1].x == Approx(bond_force * (n - 1.0) / n + hertz).epsilon(1e-9));
+
+    // Every bond broken: Hertz alone.
+    std::fill(broken.stage.begin(), broken.stage.end(), bondBroken);
+    std::fill(broken.damage.begin(), broken.damage.end(), 1.0);
+    model.setBondHistory(broken);
+    test::evaluateForces(model, 0.0);
+    CHECK(model.counters().contacts_active == 1);
+    CHECK(model.counters().interfaces_open == 1);
+    CHECK(model.counters().interfaces_cracked == 1);
+    CHECK(model.cells().force[1].x == Approx(hertz).epsilon(1e-9));
+    CHECK(model.cells().force[0].x == Approx(-hertz).epsilon(1e-9));
+    CHECK(std::fabs(model.cells().force[1].y) < 1e-9 * hertz);
+}
+
+TEST_CASE(
+    "patch contact: seated at the first broken bond, then Hertz at every feature pair from the seat",
+    "[dem][contact]")
+{
+    DemParameters p = quietContactParameters();
+    p.cell_contact_patch = true;
+    DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
+                                      contact_dilation),
+                   p);
+    const Vec3 rest = model.cells().position[1];
+    const Quat q = model.cells().orientation[1];
+    const double overlap = 2e-6;
+    model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
+    test::evaluateForces(model, 0.0);
+    // Bonded: the bonds carry the compression and the pair gets no contact force.
+    CHECK(model.counters().contacts_active == 0);
+    CHECK(model.counters().interfaces_cracked == 0);
+    const double bond_force = model.cells().force[1].x;
+    CHECK(bond_force > 0.0);
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
+                                           p.rock_poisson_ratio);
 
     // Hertz at the overlap d of each feature pair within reach, counted from the seat. Two
     // aligned box faces touch at their four corners, each held by 8 pairs: the two corner
@@ -201,8 +252,9 @@ TEST_CASE(
 namespace {
 
 // Two box cells side by side along x with every bond broken.
-DemModel openBoxPair(const DemParameters& p)
+DemModel openBoxPair(DemParameters p)
 {
+    p.cell_contact_patch = true;
     DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
                                       contact_dilation),
                    p);
