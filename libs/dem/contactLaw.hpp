@@ -491,6 +491,40 @@ constexpr double ridge_parallel_full = 20.0 * 3.14159265358979323846 / 180.0;
 constexpr double cos_ridge_parallel_begin = 0.98480775301220805936;  // cos 10 degrees
 constexpr double cos_ridge_parallel_full = 0.93969262078590838405;   // cos 20 degrees
 
+// The angle weight w(theta) of an edge pair: a core edge (unit `along`) against a wall's
+// ridge or another core's edge (unit `ridge`). 0 within ridge_parallel_begin of parallel
+// (returns false: such a pair is left to the vertex pairs at its ends), 1 beyond
+// ridge_parallel_full, smooth between. The pair's reach is weighted by w, so its overlap
+// depends on the edges' angle: d(overlap)/d(rotation of along's body) = reach w'(theta)
+// dtheta/dphi, and with cos theta = sigma a.b, dtheta/dphi = -sigma (a x b) / sin theta; the
+// torque on that body is then F reach w' sigma (a x b) / |a x b| (torque_per_force, per
+// newton of the pair's force; zero outside the ramp).
+struct EdgeAngleWeight {
+    double weight = 1.0;
+    Vec3 torque_per_force;
+};
+
+RF_HD inline bool edgeAngleWeight(const Vec3& along, const Vec3& ridge, double reach, EdgeAngleWeight& w)
+{
+    const double cosine = dot(along, ridge);
+    const double abs_cosine = cosine < 0.0 ? -cosine : cosine;
+    if (!(abs_cosine < cos_ridge_parallel_begin)) return false;
+    w.weight = 1.0;
+    w.torque_per_force = Vec3{};
+    if (abs_cosine > cos_ridge_parallel_full) {  // the angle needed only in the ramp
+        const Vec3 binormal = cross(along, ridge);
+        const double angle = std::atan2(norm(binormal), abs_cosine);
+        const double width = ridge_parallel_full - ridge_parallel_begin;
+        double u = (angle - ridge_parallel_begin) / width;
+        u = u < 0.0 ? 0.0 : u;
+        w.weight = u * u * (3.0 - 2.0 * u);
+        const double slope = 6.0 * u * (1.0 - u) / width;
+        if (slope > 0.0)
+            w.torque_per_force = (reach * slope * (cosine < 0.0 ? -1.0 : 1.0) / norm(binormal)) * binormal;
+    }
+    return true;
+}
+
 // Add a point to a pair patch; when full, the shallowest point gives way to a deeper one.
 RF_HD inline void addPairPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
 {
@@ -603,35 +637,20 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
         const double half_a = 0.5 * norm(a1 - a0);
         for (int j = 0; j < n_near_b; ++j) {
             const Vec3 b0 = world_b[edges_b[2 * near_b[j]]], b1 = world_b[edges_b[2 * near_b[j] + 1]];
-            const Vec3 along = direction_b[j];
-            const double cosine = dot(along, ridge);
-            const double abs_cosine = cosine < 0.0 ? -cosine : cosine;
-            if (!(abs_cosine < cos_ridge_parallel_begin)) continue;
             // The segments' bounding spheres apart by the reach: out of reach.
             const double apart = norm(0.5 * (b0 + b1) - middle_a) - half_a - 0.5 * norm(b1 - b0);
             if (apart >= reach) continue;
-            const Vec3 binormal = cross(along, ridge);
-            double weight = 1.0, weight_slope = 0.0;
-            if (abs_cosine > cos_ridge_parallel_full) {
-                const double angle = std::atan2(norm(binormal), abs_cosine);
-                const double width = ridge_parallel_full - ridge_parallel_begin;
-                double u = (angle - ridge_parallel_begin) / width;
-                u = u < 0.0 ? 0.0 : u;
-                weight = u * u * (3.0 - 2.0 * u);
-                weight_slope = 6.0 * u * (1.0 - u) / width;
-            }
+            EdgeAngleWeight w;  // B's edge plays the wall's core edge: the torque is on B
+            if (!edgeAngleWeight(direction_b[j], ridge, reach, w)) continue;
             Vec3 on_a, on_b;
             closestPointsOfSegments(a0, a1, b0, b1, on_a, on_b);
             const Vec3 gap = on_b - on_a;
             const double distance = norm(gap);
             PatchPoint pt;
-            pt.overlap = weight * reach - distance;
+            pt.overlap = w.weight * reach - distance;
             if (!(pt.overlap > 0.0) || !(distance > tolerance)) continue;
             pt.normal = gap / distance;
-            // The weight's torque on B, as for a core edge against a ridge (wallPatch).
-            if (weight_slope > 0.0)
-                pt.torque_per_force =
-                    (reach * weight_slope * (cosine < 0.0 ? -1.0 : 1.0) / norm(binormal)) * binormal;
+            pt.torque_per_force = w.torque_per_force;
             pt.point = on_a + (0.5 * (ra + distance - rb)) * pt.normal;
             addPairPatchPoint(points, n, pt);
         }
@@ -870,28 +889,14 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                 const Vec3 ridge = n_entries > 0 ? normalised(r1 - r0) : Vec3{};
                 for (int j = 0; j + 1 < n_entries; j += 2) {
                     const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
-                    // The angle weight w(theta) of the pair: 0 while the edges are within
-                    // ridge_parallel_begin of parallel, 1 beyond ridge_parallel_full.
-                    const Vec3 along = normalised(x1 - x0);
-                    const double cosine = dot(along, ridge);
-                    const double abs_cosine = cosine < 0.0 ? -cosine : cosine;
-                    if (!(abs_cosine < cos_ridge_parallel_begin)) continue;
-                    const Vec3 binormal = cross(along, ridge);
-                    double weight = 1.0, weight_slope = 0.0;
-                    if (abs_cosine > cos_ridge_parallel_full) {  // the angle needed only in the ramp
-                        const double angle = std::atan2(norm(binormal), abs_cosine);
-                        const double width = ridge_parallel_full - ridge_parallel_begin;
-                        double u = (angle - ridge_parallel_begin) / width;
-                        u = u < 0.0 ? 0.0 : u;
-                        weight = u * u * (3.0 - 2.0 * u);
-                        weight_slope = 6.0 * u * (1.0 - u) / width;
-                    }
+                    EdgeAngleWeight w;  // 0 near parallel: left to the vertex pairs
+                    if (!edgeAngleWeight(normalised(x1 - x0), ridge, radius, w)) continue;
                     Vec3 on_surface, on_core;
                     closestPointsOfSegments(r0, r1, x0, x1, on_surface, on_core);
                     const Vec3 gap = on_core - on_surface;
                     const double distance = norm(gap);
                     PatchPoint pt;
-                    pt.overlap = weight * radius - distance;
+                    pt.overlap = w.weight * radius - distance;
                     if (!(pt.overlap > 0.0)) continue;
                     if (distance > 1e-9 * radius) {
                         pt.normal = gap / distance;
@@ -899,14 +904,7 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                         pt.normal = normalised(core.position - on_surface);
                         cores_intersect = true;
                     }
-                    // d(overlap)/d(rotation of the cell) = r_d w'(theta) dtheta/dphi
-                    // - d(distance)/dphi; the second term is the torque of the force at the
-                    // point, the first one acts as a torque of its own: with cos theta =
-                    // sigma a.b, dtheta/dphi = -sigma (a x b) / sin theta, and the torque on
-                    // the cell is F r_d w' sigma (a x b) / |a x b|.
-                    if (weight_slope > 0.0)
-                        pt.torque_per_force =
-                            (radius * weight_slope * (cosine < 0.0 ? -1.0 : 1.0) / norm(binormal)) * binormal;
+                    pt.torque_per_force = w.torque_per_force;  // the weight's own torque
                     pt.point = on_core - (radius - 0.5 * pt.overlap) * pt.normal;
                     addPatchPoint(points, n, pt);
                 }
