@@ -249,10 +249,12 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         iface >= 0 && a.intact_bonds[iface] == a.bond_offset[iface + 1] - a.bond_offset[iface];
     const Vec3 between = cells.position[cb] - cells.position[ca];
     const double reach = cells.bounding_radius[ca] + cells.bounding_radius[cb];
-    if (bonded || norm2(between) > reach * reach) {
+    // A pair apart: no contact, and a patch is unseated.
+    const auto apart = [&] {
         if (a.patch) a.seat[p] = -1.0;
-        return clearItem(a.items, p);
-    }
+        clearItem(a.items, p);
+    };
+    if (bonded || norm2(between) > reach * reach) return apart();
     // Largest approach of the two surfaces during this step (x 1.25 for the change of
     // the velocities within the step): translation plus rotation of the far points.
     const double approach = 1.25 * a.dt *
@@ -260,35 +262,29 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
                              norm(cells.angular_velocity_world[ca]) * cells.bounding_radius[ca] +
                              norm(cells.angular_velocity_world[cb]) * cells.bounding_radius[cb]);
     a.separation_margin[p] -= approach;
-    if (a.separation_margin[p] > 0.0) {
-        if (a.patch) a.seat[p] = -1.0;
-        return clearItem(a.items, p);
-    }
+    if (a.separation_margin[p] > 0.0) return apart();
     const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
     const Vec3 previous = a.items.last_normal[p];
     const Vec3 fallback = norm2(previous) > 0.0 ? previous : normalised(between);
     const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
     a.separation_margin[p] = g.overlap < 0.0 ? -g.overlap : 0.0;
-    if (!(g.overlap > 0.0)) {
-        if (a.patch) a.seat[p] = -1.0;
-        return clearItem(a.items, p);
-    }
+    if (!(g.overlap > 0.0)) return apart();
     a.items.last_normal[p] = g.normal;
     // The seat. A face neighbour's contact starts at its first broken bond, when its faces
     // are pressed together by what the bonds carry (microns): the patch's Hertz springs
-    // would hold energy at once that nothing put in (with tens of points on a face, 0.75 J
-    // in a 20 J crushing test). So its overlaps are counted from the overlap at the start;
-    // the contact takes up what the face closes from then on (the compression the broken
-    // bonds carried is released with them, booked as fracture). While the faces open, the
-    // seat follows the overlap down, with every point's spring at zero: no energy jumps.
-    // Other pairs come into contact from apart and start at zero.
-    double no_seat = 0.0;
-    double& seat = a.patch ? a.seat[p] : no_seat;
+    // would hold energy at once that nothing put in (with tens of points on a face, +1.0 J
+    // in the main split of a 25 J crushing test, +0.1 J seated). So its overlaps are counted
+    // from the overlap at the start; the contact takes up what the face closes from then on
+    // (the compression the broken bonds carried is released with them, booked as fracture).
+    // While the faces open, the seat follows the overlap down, with every point's spring at
+    // zero: no energy jumps. Other pairs come into contact from apart and start at zero.
+    double seat = 0.0;  // point contacts: the paper's unseated start
     if (a.patch) {
-        if (seat < 0.0)
-            seat = iface >= 0 ? g.overlap : 0.0;
-        else if (g.overlap < seat)
-            seat = g.overlap;
+        if (a.seat[p] < 0.0)
+            a.seat[p] = iface >= 0 ? g.overlap : 0.0;
+        else if (g.overlap < a.seat[p])
+            a.seat[p] = g.overlap;
+        seat = a.seat[p];
     }
     const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
     PatchPoint points[max_pair_patch_points];
@@ -376,10 +372,12 @@ struct WallKernelArgs {
     double* wall_power = nullptr;  // force on the cell . wall velocity at the contact [W]
 };
 
-// Add a point to a patch; when full, the shallowest point gives way to a deeper one.
-RF_HD inline void addPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
+// Add a point to a patch of at most `capacity` points; when full, the shallowest point gives
+// way to a deeper one.
+RF_HD inline void addPatchPoint(PatchPoint* points, int& n, const PatchPoint& p,
+                                int capacity = max_patch_points)
 {
-    if (n < max_patch_points) {
+    if (n < capacity) {
         points[n++] = p;
         return;
     }
@@ -525,23 +523,38 @@ RF_HD inline bool edgeAngleWeight(const Vec3& along, const Vec3& ridge, double r
     return true;
 }
 
-// Add a point to a pair patch; when full, the shallowest point gives way to a deeper one.
-RF_HD inline void addPairPatchPoint(PatchPoint* points, int& n, const PatchPoint& p)
-{
-    if (n < max_pair_patch_points) {
-        points[n++] = p;
-        return;
-    }
-    int shallowest = 0;
-    for (int i = 1; i < n; ++i)
-        if (points[i].overlap < points[shallowest].overlap) shallowest = i;
-    if (p.overlap > points[shallowest].overlap) points[shallowest] = p;
-}
-
 // Most core edges of one cell that a pair patch looks at (those within reach of the other
 // core), and most core vertices of a cell with a pair patch (larger cores: the GJK point).
 constexpr int max_pair_patch_edges = 48;
 constexpr int max_pair_patch_vertices = 96;
+
+// A core edge within reach of the other core of a pair: its ends (indices into the world
+// vertices), unit direction and half length.
+struct NearEdge {
+    int end0 = 0, end1 = 0;
+    Vec3 direction;
+    double half_length = 0.0;
+};
+
+// The edges of a core (vertex index pairs, world vertices) with an end less than `reach`
+// beyond the other core's supporting plane (`beyond` per vertex): the plane bound is linear
+// along an edge, so the others are out of reach. Returns how many (at most max_pair_patch_edges).
+RF_HD inline int nearEdges(const unsigned char* edges, int n_edges, const Vec3* world, const double* beyond,
+                           double reach, NearEdge* near)
+{
+    int n = 0;
+    for (int e = 0; e < n_edges && n < max_pair_patch_edges; ++e) {
+        const int i0 = edges[2 * e], i1 = edges[2 * e + 1];
+        if ((beyond[i0] < beyond[i1] ? beyond[i0] : beyond[i1]) >= reach) continue;
+        const Vec3 along = world[i1] - world[i0];
+        near[n].end0 = i0;
+        near[n].end1 = i1;
+        near[n].direction = normalised(along);
+        near[n].half_length = 0.5 * norm(along);
+        ++n;
+    }
+    return n;
+}
 
 // The contact of two dilated cells as a patch of Hertz points (docs/theory-dem.md §6), the
 // cell–cell form of the wall patch: one point per pair of features within r_a + r_b,
@@ -568,9 +581,8 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
     const double tolerance = 1e-9 * reach;
     const ConvexVertexSet core_a = cellCore(cells, ca), core_b = cellCore(cells, cb);
     if (core_a.n_vertices > max_pair_patch_vertices || core_b.n_vertices > max_pair_patch_vertices) return 0;
-    // World vertices and their height above the other core's supporting plane (GJK's
-    // separating planes: B lies beyond the plane through p_b normal to n, A behind the one
-    // through p_a), a lower bound of their distance from the other core.
+    // World vertices and their distance beyond the other core's supporting plane (the
+    // separating planes above), a lower bound of their distance from that core.
     Vec3 world_a[max_pair_patch_vertices], world_b[max_pair_patch_vertices];
     double beyond_a[max_pair_patch_vertices], beyond_b[max_pair_patch_vertices];
     const double plane_b = dot(g.point_b, g.normal), plane_a = dot(g.point_a, g.normal);
@@ -606,42 +618,29 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
             pt.normal = side == 0 ? towards_other : -1.0 * towards_other;
             const Vec3 on_a = side == 0 ? x : gjk.point_b;
             pt.point = on_a + (0.5 * (ra + gjk.distance - rb)) * pt.normal;
-            addPairPatchPoint(points, n, pt);
+            addPatchPoint(points, n, pt, max_pair_patch_points);
         }
     }
-    // Edge pairs among the edges of each core within reach of the other core (an edge is in
-    // reach only if one of its ends is: the plane bound is linear along it).
-    unsigned short near_a[max_pair_patch_edges], near_b[max_pair_patch_edges];
-    Vec3 direction_a[max_pair_patch_edges], direction_b[max_pair_patch_edges];
-    int n_near_a = 0, n_near_b = 0;
-    const unsigned char* edges_a = cells.core_edges + cells.core_edge_offset[ca];
-    const unsigned char* edges_b = cells.core_edges + cells.core_edge_offset[cb];
-    const int n_edges_a = (cells.core_edge_offset[ca + 1] - cells.core_edge_offset[ca]) / 2;
-    const int n_edges_b = (cells.core_edge_offset[cb + 1] - cells.core_edge_offset[cb]) / 2;
-    for (int e = 0; e < n_edges_a && n_near_a < max_pair_patch_edges; ++e) {
-        const int i0 = edges_a[2 * e], i1 = edges_a[2 * e + 1];
-        if ((beyond_a[i0] < beyond_a[i1] ? beyond_a[i0] : beyond_a[i1]) >= reach) continue;
-        direction_a[n_near_a] = normalised(world_a[i1] - world_a[i0]);
-        near_a[n_near_a++] = static_cast<unsigned short>(e);
-    }
-    for (int e = 0; e < n_edges_b && n_near_b < max_pair_patch_edges; ++e) {
-        const int i0 = edges_b[2 * e], i1 = edges_b[2 * e + 1];
-        if ((beyond_b[i0] < beyond_b[i1] ? beyond_b[i0] : beyond_b[i1]) >= reach) continue;
-        direction_b[n_near_b] = normalised(world_b[i1] - world_b[i0]);
-        near_b[n_near_b++] = static_cast<unsigned short>(e);
-    }
+    // Edge pairs among the edges of each core within reach of the other core.
+    NearEdge near_a[max_pair_patch_edges], near_b[max_pair_patch_edges];
+    const int n_near_a = nearEdges(cells.core_edges + cells.core_edge_offset[ca],
+                                   (cells.core_edge_offset[ca + 1] - cells.core_edge_offset[ca]) / 2, world_a,
+                                   beyond_a, reach, near_a);
+    const int n_near_b = nearEdges(cells.core_edges + cells.core_edge_offset[cb],
+                                   (cells.core_edge_offset[cb + 1] - cells.core_edge_offset[cb]) / 2, world_b,
+                                   beyond_b, reach, near_b);
     for (int i = 0; i < n_near_a; ++i) {
-        const Vec3 a0 = world_a[edges_a[2 * near_a[i]]], a1 = world_a[edges_a[2 * near_a[i] + 1]];
-        const Vec3 ridge = direction_a[i];  // A's edge plays the wall's ridge
+        const Vec3 a0 = world_a[near_a[i].end0], a1 = world_a[near_a[i].end1];
         const Vec3 middle_a = 0.5 * (a0 + a1);
-        const double half_a = 0.5 * norm(a1 - a0);
         for (int j = 0; j < n_near_b; ++j) {
-            const Vec3 b0 = world_b[edges_b[2 * near_b[j]]], b1 = world_b[edges_b[2 * near_b[j] + 1]];
+            const Vec3 b0 = world_b[near_b[j].end0], b1 = world_b[near_b[j].end1];
             // The segments' bounding spheres apart by the reach: out of reach.
-            const double apart = norm(0.5 * (b0 + b1) - middle_a) - half_a - 0.5 * norm(b1 - b0);
+            const double apart =
+                norm(0.5 * (b0 + b1) - middle_a) - near_a[i].half_length - near_b[j].half_length;
             if (apart >= reach) continue;
-            EdgeAngleWeight w;  // B's edge plays the wall's core edge: the torque is on B
-            if (!edgeAngleWeight(direction_b[j], ridge, reach, w)) continue;
+            // A's edge plays the wall's ridge, B's the core edge: the weight's torque is on B.
+            EdgeAngleWeight w;
+            if (!edgeAngleWeight(near_b[j].direction, near_a[i].direction, reach, w)) continue;
             Vec3 on_a, on_b;
             closestPointsOfSegments(a0, a1, b0, b1, on_a, on_b);
             const Vec3 gap = on_b - on_a;
@@ -652,7 +651,7 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
             pt.normal = gap / distance;
             pt.torque_per_force = w.torque_per_force;
             pt.point = on_a + (0.5 * (ra + distance - rb)) * pt.normal;
-            addPairPatchPoint(points, n, pt);
+            addPatchPoint(points, n, pt, max_pair_patch_points);
         }
     }
     return n;

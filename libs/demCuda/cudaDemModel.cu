@@ -525,9 +525,9 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
     total += arrayBytes(host.cell_interface_offset_) + arrayBytes(host.cell_interfaces_);
     const ContactPairArrays& p = host.pairs_;
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
-             arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) + arrayBytes(p.seat) +
-             arrayBytes(p.force_on_b) + arrayBytes(p.point_or_torque) + arrayBytes(p.status) +
-             arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
+             arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) +
+             arrayBytes(p.seat) + arrayBytes(p.force_on_b) + arrayBytes(p.point_or_torque) +
+             arrayBytes(p.status) + arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
     total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
              arrayBytes(w.triangles) + arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) +

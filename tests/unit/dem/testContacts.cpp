@@ -35,6 +35,27 @@ double effectiveModulus(double E1, double nu1, double E2, double nu2)
     return 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
 }
 
+// Hertz between two dilated cells (R* = r_d/2) at overlap d.
+double cellCellHertz(const DemParameters& p, double d)
+{
+    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
+                                           p.rock_poisson_ratio);
+    return 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(d, 1.5);
+}
+
+// Cell 1 of a bonded pair of boxes along x pressed `overlap` into cell 0: the bonds carry the
+// compression and the pair gets no contact force. Returns the bonds' force on cell 1.
+double pressBondedPair(DemModel& model, double overlap)
+{
+    model.setCellPose(1, model.cells().position[1] - Vec3{overlap, 0.0, 0.0}, model.cells().orientation[1]);
+    test::evaluateForces(model, 0.0);
+    CHECK(model.counters().contacts_active == 0);
+    CHECK(model.counters().interfaces_cracked == 0);
+    const double bond_force = model.cells().force[1].x;
+    CHECK(bond_force > 0.0);
+    return bond_force;
+}
+
 // Lowest z of the core of cell c at orientation q.
 double lowestCoreZ(const DemModel& model, int c, const Vec3& position, const Quat& q)
 {
@@ -126,19 +147,9 @@ TEST_CASE(
     DemModel model(test::boxBlockMesh(2, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
                                       contact_dilation),
                    p);
-    const Vec3 rest = model.cells().position[1];
-    const Quat q = model.cells().orientation[1];
     const double overlap = 2e-6;
-    model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
-    test::evaluateForces(model, 0.0);
-    // Bonded: the bonds carry the compression and the pair gets no contact force.
-    CHECK(model.counters().contacts_active == 0);
-    CHECK(model.counters().interfaces_cracked == 0);
-    const double bond_force = model.cells().force[1].x;
-    CHECK(bond_force > 0.0);
-    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
-                                           p.rock_poisson_ratio);
-    const double hertz = 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(overlap, 1.5);
+    const double bond_force = pressBondedPair(model, overlap);
+    const double hertz = cellCellHertz(p, overlap);
 
     // One bond broken: a face that has lost some of its bonds can hinge on the rest and close
     // where they are gone, so its contact is on already (not started at the last bond with
@@ -168,9 +179,8 @@ TEST_CASE(
     CHECK(std::fabs(model.cells().force[1].y) < 1e-9 * hertz);
 }
 
-TEST_CASE(
-    "patch contact: seated at the first broken bond, then Hertz at every feature pair from the seat",
-    "[dem][contact]")
+TEST_CASE("patch contact: seated at the first broken bond, then Hertz at every feature pair from the seat",
+          "[dem][contact]")
 {
     DemParameters p = quietContactParameters();
     p.cell_contact_patch = true;
@@ -180,23 +190,13 @@ TEST_CASE(
     const Vec3 rest = model.cells().position[1];
     const Quat q = model.cells().orientation[1];
     const double overlap = 2e-6;
-    model.setCellPose(1, rest - Vec3{overlap, 0.0, 0.0}, q);
-    test::evaluateForces(model, 0.0);
-    // Bonded: the bonds carry the compression and the pair gets no contact force.
-    CHECK(model.counters().contacts_active == 0);
-    CHECK(model.counters().interfaces_cracked == 0);
-    const double bond_force = model.cells().force[1].x;
-    CHECK(bond_force > 0.0);
-    const double E_star = effectiveModulus(p.rock_youngs_modulus, p.rock_poisson_ratio, p.rock_youngs_modulus,
-                                           p.rock_poisson_ratio);
+    const double bond_force = pressBondedPair(model, overlap);
 
     // Hertz at the overlap d of each feature pair within reach, counted from the seat. Two
     // aligned box faces touch at their four corners, each held by 8 pairs: the two corner
     // vertices against the other core and the 6 pairs of non-parallel edges meeting there
     // (docs/theory-dem.md §6).
-    auto patch = [&](double d) {
-        return 32.0 * 4.0 / 3.0 * E_star * std::sqrt(0.5 * contact_dilation) * std::pow(d, 1.5);
-    };
+    auto patch = [&](double d) { return 32.0 * cellCellHertz(p, d); };
     auto pressTo = [&](double d) {
         model.setCellPose(1, rest - Vec3{d, 0.0, 0.0}, q);
         test::evaluateForces(model, 0.0);
