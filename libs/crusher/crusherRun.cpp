@@ -314,11 +314,15 @@ struct CrusherRun::Impl {
     std::string progressExtras() const
     {
         char buffer[200];
-        // cut: contacts whose cores intersect in this step (deeper than the dilation radius:
-        // unresolved, docs/theory-dem.md §6); more than a few means the rocks are jammed.
-        std::snprintf(buffer, sizeof(buffer), "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d",
+        // cut: contacts whose cores intersect in this step (pressed deeper than the shells,
+        // docs/theory-dem.md §6), cell–cell pairs + cells on the liners; more than a few means
+        // the rocks are jammed.
+        const DemCounters& counters = model->counters();
+        std::snprintf(buffer, sizeof(buffer),
+                      "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d",
                       model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
-                      model->counters().bonds_broken, model->counters().core_intersections);
+                      counters.bonds_broken, counters.pair_core_intersections,
+                      counters.core_intersections - counters.pair_core_intersections);
         return buffer;
     }
 };

@@ -91,7 +91,30 @@ struct CellContactView {
     const Vec3* core_vertices = nullptr;        // body frame
     const int* core_edge_offset = nullptr;      // entries of core_edges, two per edge
     const unsigned char* core_edges = nullptr;  // vertex index pairs of the core's edges
+    const int* core_plane_offset = nullptr;     // entries of core_planes
+    const CorePlane* core_planes = nullptr;     // the core's face planes, body frame
 };
+
+// Signed distance of a world point x from the surface of cell c's core where x is inside or
+// on it (negative inside): the largest signed distance to the core's face planes (the
+// nearest facet; planes that are no facet lie outside and never decide). normal receives
+// that facet's outward normal (world): the depth's gradient.
+RF_HD inline double coreDepthDistance(const CellContactView& cells, int c, const Vec3& x, Vec3& normal)
+{
+    const Mat3& R = cells.rotation[c];
+    const Vec3 local = transposeTimes(R, x - cells.position[c]);
+    double largest = -1e300;
+    int facet = cells.core_plane_offset[c];
+    for (int f = cells.core_plane_offset[c]; f < cells.core_plane_offset[c + 1]; ++f) {
+        const double d = dot(cells.core_planes[f].normal, local) - cells.core_planes[f].offset;
+        if (d > largest) {
+            largest = d;
+            facet = f;
+        }
+    }
+    normal = R * cells.core_planes[facet].normal;
+    return largest;
+}
 
 RF_HD inline ConvexVertexSet cellCore(const CellContactView& cells, int c)
 {
@@ -288,7 +311,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     }
     const unsigned char status = g.cores_intersect ? contactCoresIntersect : contactActive;
     PatchPoint points[max_pair_patch_points];
-    int n_points = a.patch && !g.cores_intersect ? pairPatch(cells, ca, cb, g, ra, rb, points) : 0;
+    int n_points = a.patch ? pairPatch(cells, ca, cb, g, ra, rb, points) : 0;
     if (n_points > 0) {
         int kept = 0;
         for (int i = 0; i < n_points; ++i) {
@@ -321,8 +344,9 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         a.point_or_torque[p] = patch.torque;
         return;
     }
-    // Cores cut (the depth is not resolved: one point along the last normal), or no
-    // feature pair within reach (round-off at the edge of reach): GJK's single point.
+    // The point contact, or a patch without a feature pair within reach (round-off at the edge
+    // of reach): GJK's single point; where the cores are cut, along the last normal (the depth
+    // is not resolved: the patch resolves it).
     if (a.patch && !(g.overlap - seat > 0.0)) return clearItem(a.items, p);
     ContactInput in;
     in.overlap = g.overlap - seat;
@@ -556,6 +580,27 @@ RF_HD inline int nearEdges(const unsigned char* edges, int n_edges, const Vec3* 
     return n;
 }
 
+// Whether edge a of core A and edge b of core B can have passed through each other: the
+// closest points of the segments (on_a, on_b) lie inside both segments, where they are the
+// closest points of the two lines, and the lines' common normal c points out of A at a and
+// into B at b (judged by outward_a, from A's centroid to edge a, and outward_b): the two
+// edges face each other, as two edges of faces pressed on each other do. Then normal
+// receives c oriented out of A, along which the lines' signed distance passes through zero.
+RF_HD inline bool crossingNormal(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1,
+                                 const Vec3& on_a, const Vec3& on_b, const Vec3& outward_a,
+                                 const Vec3& outward_b, Vec3& normal)
+{
+    const Vec3 da = a1 - a0, db = b1 - b0;
+    const double s = dot(on_a - a0, da) / norm2(da), t = dot(on_b - b0, db) / norm2(db);
+    const double inside = 1e-12;
+    if (!(s > inside && s < 1.0 - inside && t > inside && t < 1.0 - inside)) return false;
+    const Vec3 c = cross(da, db);
+    const double out_of_a = dot(c, outward_a), out_of_b = dot(c, outward_b);
+    if (!(out_of_a * out_of_b < 0.0)) return false;
+    normal = (out_of_a < 0.0 ? -1.0 / norm(c) : 1.0 / norm(c)) * c;
+    return true;
+}
+
 // The contact of two dilated cells as a patch of Hertz points (docs/theory-dem.md §6), the
 // cell–cell form of the wall patch: one point per pair of features within r_a + r_b,
 //  - every core vertex of either cell and the other core: the vertex's distance to that
@@ -577,6 +622,7 @@ RF_HD inline int nearEdges(const unsigned char* edges, int n_edges, const Vec3* 
 RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const ContactGeometry& g, double ra,
                            double rb, PatchPoint* points)
 {
+    const bool cut = g.cores_intersect;
     const double reach = ra + rb;
     const double tolerance = 1e-9 * reach;
     const ConvexVertexSet core_a = cellCore(cells, ca), core_b = cellCore(cells, cb);
@@ -585,14 +631,15 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
     // separating planes above), a lower bound of their distance from that core.
     Vec3 world_a[max_pair_patch_vertices], world_b[max_pair_patch_vertices];
     double beyond_a[max_pair_patch_vertices], beyond_b[max_pair_patch_vertices];
+    // Cut cores have no separating plane: nothing is culled.
     const double plane_b = dot(g.point_b, g.normal), plane_a = dot(g.point_a, g.normal);
     for (int v = 0; v < core_a.n_vertices; ++v) {
         world_a[v] = worldVertex(core_a, v);
-        beyond_a[v] = plane_b - dot(world_a[v], g.normal);
+        beyond_a[v] = cut ? -reach : plane_b - dot(world_a[v], g.normal);
     }
     for (int v = 0; v < core_b.n_vertices; ++v) {
         world_b[v] = worldVertex(core_b, v);
-        beyond_b[v] = dot(world_b[v], g.normal) - plane_a;
+        beyond_b[v] = cut ? -reach : dot(world_b[v], g.normal) - plane_a;
     }
     int n = 0;
     // Vertices of each core against the other.
@@ -610,8 +657,20 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
             vertex.n_vertices = 1;
             vertex.position = x;
             const GjkResult gjk = gjkDistance(vertex, other, x - other.position);
-            if (gjk.intersecting || !(gjk.distance > tolerance)) continue;  // cores cut: not here
             PatchPoint pt;
+            if (gjk.intersecting || !(gjk.distance > tolerance)) {
+                // Inside the other core (only where the cores are cut): its depth below the
+                // nearest facet continues the distance through zero, so the overlap keeps
+                // growing smoothly and the force still derives from the one potential.
+                Vec3 facet;
+                const double depth = coreDepthDistance(cells, side == 0 ? cb : ca, x, facet);
+                pt.overlap = reach - depth;
+                pt.normal = side == 0 ? -1.0 * facet : facet;
+                const Vec3 on_a = side == 0 ? x : x - depth * facet;
+                pt.point = on_a + (0.5 * (ra + depth - rb)) * pt.normal;
+                addPatchPoint(points, n, pt, max_pair_patch_points);
+                continue;
+            }
             pt.overlap = reach - gjk.distance;
             if (!(pt.overlap > 0.0)) continue;
             const Vec3 towards_other = (gjk.point_b - gjk.point_a) / gjk.distance;
@@ -644,11 +703,26 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
             Vec3 on_a, on_b;
             closestPointsOfSegments(a0, a1, b0, b1, on_a, on_b);
             const Vec3 gap = on_b - on_a;
-            const double distance = norm(gap);
+            double distance = norm(gap);
             PatchPoint pt;
+            Vec3 crossing;
+            if (cut &&
+                crossingNormal(a0, a1, b0, b1, on_a, on_b, middle_a - cells.position[ca],
+                               0.5 * (b0 + b1) - cells.position[cb], crossing) &&
+                dot(gap, crossing) > -reach) {
+                // Where the cores are cut, two edges facing each other can pass through each
+                // other (two pressed faces sink into each other, their edges crossing): the
+                // distance of their lines, signed positive outside A, continues through zero
+                // and the overlap keeps growing, up to 2 (r_a + r_b) (beyond, the edges are
+                // far apart on the lines' two sides, not crossed).
+                distance = dot(gap, crossing);
+                pt.normal = crossing;
+            } else {
+                if (!(distance > tolerance)) continue;
+                pt.normal = gap / distance;
+            }
             pt.overlap = w.weight * reach - distance;
-            if (!(pt.overlap > 0.0) || !(distance > tolerance)) continue;
-            pt.normal = gap / distance;
+            if (!(pt.overlap > 0.0)) continue;
             pt.torque_per_force = w.torque_per_force;
             pt.point = on_a + (0.5 * (ra + distance - rb)) * pt.normal;
             addPatchPoint(points, n, pt, max_pair_patch_points);

@@ -135,6 +135,7 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
     interfaces_.bond_offset.assign(1, 0);
     cells_.core_vertex_offset.assign(1, 0);
     cells_.core_edge_offset.assign(1, 0);
+    cells_.core_plane_offset.assign(1, 0);
     cells_.anchor_node_offset.assign(1, 0);
     buildIncidence();
     refreshKinematicCaches();
@@ -190,6 +191,7 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
     c.initial_bond_count.resize(first + n, 0);
     if (c.core_vertex_offset.empty()) c.core_vertex_offset.assign(1, 0);
     if (c.core_edge_offset.empty()) c.core_edge_offset.assign(1, 0);
+    if (c.core_plane_offset.empty()) c.core_plane_offset.assign(1, 0);
     for (int local = 0; local < n; ++local) {
         const int cell = first + local;
         const double density = parameters_.rock_density;
@@ -255,6 +257,16 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
             c.core_edges.push_back(static_cast<std::uint8_t>(edge[1]));
         }
         c.core_edge_offset.push_back(static_cast<int>(c.core_edges.size()));
+        // The core's facets lie on the cell's face planes moved inward (or scaled, for a
+        // shrunk core), so each cell face normal at the core's support bounds it; redundant
+        // ones (a face eroded away) only lie outside and never decide a depth.
+        for (const CellPlane& plane : planes) {
+            const Vec3 normal = transposeTimes(R, plane.normal);
+            double support = -1e300;
+            for (const Vec3& v : core.vertices) support = std::max(support, dot(plane.normal, v));
+            c.core_planes.push_back({normal, support});
+        }
+        c.core_plane_offset.push_back(static_cast<int>(c.core_planes.size()));
         c.bounding_radius[cell] = reach + dilation;
     }
     const double G = parameters_.rock_youngs_modulus / (2.0 * (1.0 + parameters_.rock_poisson_ratio));
@@ -455,6 +467,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     CellArrays& c = cells_;
     keepFlaggedRanges(c.core_vertex_offset, c.core_vertices, keep_cell);
     keepFlaggedRanges(c.core_edge_offset, c.core_edges, keep_cell);
+    keepFlaggedRanges(c.core_plane_offset, c.core_planes, keep_cell);
     keepFlaggedRanges(c.anchor_node_offset, c.anchor_nodes, keep_cell);
     keepFlagged(c.position, keep_cell);
     keepFlagged(c.velocity, keep_cell);
@@ -605,6 +618,8 @@ void DemModel::shrinkToFit()
     c.core_vertex_offset.shrink_to_fit();
     c.core_edges.shrink_to_fit();
     c.core_edge_offset.shrink_to_fit();
+    c.core_planes.shrink_to_fit();
+    c.core_plane_offset.shrink_to_fit();
     InterfaceArrays& f = interfaces_;
     for (auto* v : {&f.cell_i, &f.cell_j, &f.bond_offset, &f.intact_bonds}) v->shrink_to_fit();
     for (auto* v : {&f.normal_i, &f.normal_j}) v->shrink_to_fit();
@@ -1087,6 +1102,8 @@ CellContactView DemModel::cellView() const
     v.core_vertices = cells_.core_vertices.data();
     v.core_edge_offset = cells_.core_edge_offset.data();
     v.core_edges = cells_.core_edges.data();
+    v.core_plane_offset = cells_.core_plane_offset.data();
+    v.core_planes = cells_.core_planes.data();
     return v;
 }
 
@@ -1219,6 +1236,7 @@ void DemModel::runContactKernels(double dt)
         counters_.contacts_active += s.active;
         counters_.core_intersections += s.cores_intersect;
     }
+    counters_.pair_core_intersections = counters_.core_intersections;
     counters_.wall_contacts_active = sumContactEnergies(wall_items_, energies_, force_rates_.contact_damping,
                                                         counters_.core_intersections);
     energies_.contact_damping += force_rates_.contact_damping * 0.5 * dt;  // second half kick
@@ -1639,7 +1657,7 @@ DemMemoryBytes DemModel::memoryUse() const
               bytes(c.dilation_radius) + bytes(c.bounding_radius) + bytes(c.initial_bond_count) +
               bytes(rotation_) + bytes(angular_velocity_world_) + bytes(position_at_build_);
     m.cores = bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.core_edge_offset) +
-              bytes(c.core_edges);
+              bytes(c.core_edges) + bytes(c.core_plane_offset) + bytes(c.core_planes);
     m.anchor_nodes = bytes(c.anchor_node_offset) + bytes(c.anchor_nodes);
     const InterfaceArrays& f = interfaces_;
     m.interfaces = bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +

@@ -54,8 +54,9 @@ struct DemCounters {
     int contact_pairs_listed = 0;  // current neighbour list
     int contacts_active = 0;       // cell–cell contacts with overlap
     int wall_contacts_active = 0;
-    int core_intersections = 0;  // contacts this step whose cores intersect (fallback normal)
-    int shrunk_cores = 0;        // cells whose erosion failed (shrink fallback)
+    int core_intersections = 0;       // contacts this step whose cores are cut (pairs and walls)
+    int pair_core_intersections = 0;  // of these, cell–cell pairs
+    int shrunk_cores = 0;             // cells whose erosion failed (shrink fallback)
 };
 
 // What the model's arrays hold, by part [bytes] (bench/, docs/benchmarks.md).

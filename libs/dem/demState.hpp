@@ -35,6 +35,11 @@ struct CellArrays {
     // core_edge_offset[c+1]) of core_edges, two per edge.
     std::vector<int> core_edge_offset;
     std::vector<std::uint8_t> core_edges;  // 2 per edge
+    // The core's face planes, body frame (the cell's face normals, each at the core's
+    // support): cell c's are [core_plane_offset[c], core_plane_offset[c+1]). They give the
+    // depth of a point inside the core, where GJK has no distance (docs/theory-dem.md §6).
+    std::vector<int> core_plane_offset;
+    std::vector<CorePlane> core_planes;
     // The face nodes the cell's bonds are anchored at, each once (a node is shared by
     // the bonds of up to three faces of the cell), body frame [m]: cell c's are
     // [anchor_node_offset[c], anchor_node_offset[c+1]).

@@ -18,6 +18,14 @@ struct ConvexVertexSet {
     Mat3 rotation = Mat3::identity();
 };
 
+// A supporting plane of a polytope in its local frame: every point x of it has
+// dot(normal, x) <= offset. The planes of a core's faces give the depth of a point inside
+// it (a point's signed distance is the largest dot(normal, x) - offset over the facets).
+struct CorePlane {
+    Vec3 normal;  // outward unit normal
+    double offset = 0.0;
+};
+
 // Index of the vertex furthest along the world direction.
 RF_HD inline int supportIndex(const ConvexVertexSet& s, const Vec3& direction)
 {

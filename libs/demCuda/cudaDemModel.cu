@@ -314,8 +314,9 @@ struct CudaDemModel::Buffers {
     DeviceArray<Vec3> position, velocity, angular_velocity, force, torque, principal_inertia, core_vertices;
     DeviceArray<Quat> orientation;
     DeviceArray<double> mass, dilation_radius, bounding_radius;
-    DeviceArray<int> core_vertex_offset, core_edge_offset;
+    DeviceArray<int> core_vertex_offset, core_edge_offset, core_plane_offset;
     DeviceArray<unsigned char> core_edges;
+    DeviceArray<CorePlane> core_planes;
     DeviceArray<Mat3> rotation;
     DeviceArray<Vec3> angular_velocity_world, position_at_build;
     // Interfaces and bonds.
@@ -368,6 +369,8 @@ struct CudaDemModel::Buffers {
                               core_vertex_offset.bytes(),
                               core_edge_offset.bytes(),
                               core_edges.bytes(),
+                              core_plane_offset.bytes(),
+                              core_planes.bytes(),
                               rotation.bytes(),
                               angular_velocity_world.bytes(),
                               position_at_build.bytes(),
@@ -510,7 +513,7 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
                         arrayBytes(c.mass) + arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) +
                         arrayBytes(c.bounding_radius) + arrayBytes(c.core_vertex_offset) +
                         arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) +
-                        arrayBytes(c.core_edges);
+                        arrayBytes(c.core_edges) + arrayBytes(c.core_plane_offset) + arrayBytes(c.core_planes);
     total += n * (sizeof(Mat3) + 2 * sizeof(Vec3));  // rotation, world angular velocity, position at build
     const InterfaceArrays& f = host.interfaces_;
     total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
@@ -565,6 +568,8 @@ void CudaDemModel::upload()
     d.core_vertices.upload(c.core_vertices);
     d.core_edge_offset.upload(c.core_edge_offset);
     d.core_edges.upload(c.core_edges);
+    d.core_plane_offset.upload(c.core_plane_offset);
+    d.core_planes.upload(c.core_planes);
     d.rotation.upload(host_.rotation_);
     d.angular_velocity_world.upload(host_.angular_velocity_world_);
     const InterfaceArrays& f = host_.interfaces_;
@@ -785,6 +790,8 @@ void CudaDemModel::computeForces(double dt)
     cells.core_vertices = d.core_vertices.data();
     cells.core_edge_offset = d.core_edge_offset.data();
     cells.core_edges = d.core_edges.data();
+    cells.core_plane_offset = d.core_plane_offset.data();
+    cells.core_planes = d.core_planes.data();
 
     PairKernelArgs pa;
     pa.constants = h.rock_rock_;
@@ -845,6 +852,7 @@ void CudaDemModel::computeForces(double dt)
             h.energies_.friction += s.friction_dissipation;
         }
         *counter = active;
+        if (pairs) h.counters_.pair_core_intersections = h.counters_.core_intersections;
     }
     h.energies_.contact_damping += h.force_rates_.contact_damping * 0.5 * dt;
 
