@@ -953,6 +953,7 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
         const Vec3* local = a.triangle_vertices + 3 * t;
         const Vec3 p[3] = {wall.origin + wall.rotation * local[0], wall.origin + wall.rotation * local[1],
                            wall.origin + wall.rotation * local[2]};
+        const Vec3 triangle_normal = cross(p[1] - p[0], p[2] - p[0]);  // winding side, not unit
         for (int k = 0; k < 3; ++k) {
             if (flags & ridgeBit(k, side)) {
                 const Vec3 r0 = p[k], r1 = p[(k + 1) % 3];
@@ -967,16 +968,26 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                     Vec3 on_surface, on_core;
                     closestPointsOfSegments(r0, r1, x0, x1, on_surface, on_core);
                     const Vec3 gap = on_core - on_surface;
-                    const double distance = norm(gap);
+                    double distance = norm(gap);
                     PatchPoint pt;
-                    pt.overlap = w.weight * radius - distance;
-                    if (!(pt.overlap > 0.0)) continue;
-                    if (distance > 1e-9 * radius) {
+                    Vec3 crossing;
+                    if (crossingNormal(r0, r1, x0, x1, on_surface, on_core, side * triangle_normal,
+                                       0.5 * (x0 + x1) - core.position, crossing) &&
+                        !(dot(gap, crossing) > 0.0) && dot(gap, crossing) > -radius) {
+                        // The ridge has passed through the core edge (the core is r_d deep):
+                        // the lines' signed distance continues through zero, so the overlap
+                        // keeps growing (up to 2 r_d) and still derives from the potential.
+                        distance = dot(gap, crossing);
+                        pt.normal = crossing;
+                        cores_intersect = true;
+                    } else if (distance > 1e-9 * radius) {
                         pt.normal = gap / distance;
-                    } else {  // the ridge cuts the core edge: the core is r_d deep
+                    } else {  // the ridge cuts the core edge where their lines cannot cross
                         pt.normal = normalised(core.position - on_surface);
                         cores_intersect = true;
                     }
+                    pt.overlap = w.weight * radius - distance;
+                    if (!(pt.overlap > 0.0)) continue;
                     pt.torque_per_force = w.torque_per_force;  // the weight's own torque
                     pt.point = on_core - (radius - 0.5 * pt.overlap) * pt.normal;
                     addPatchPoint(points, n, pt);
@@ -991,11 +1002,14 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                 const GjkResult gjk = gjkDistance(vertex, core, core.position - p[k]);
                 PatchPoint pt;
                 if (gjk.intersecting || !(gjk.distance > 1e-9 * radius)) {
-                    // The surface's corner is inside the core: the depth is not resolved.
-                    pt.overlap = radius;
-                    pt.normal = normalised(core.position - p[k]);
+                    // The surface's corner is inside the core: its depth below the core's
+                    // nearest facet continues the distance through zero (one potential).
+                    Vec3 facet;
+                    const double depth = coreDepthDistance(a.cells, c, p[k], facet);
+                    pt.overlap = radius - depth;
+                    pt.normal = -1.0 * facet;
                     cores_intersect = true;
-                    pt.point = p[k];
+                    pt.point = p[k] - depth * facet - (radius - 0.5 * pt.overlap) * pt.normal;
                 } else {
                     pt.overlap = radius - gjk.distance;
                     if (!(pt.overlap > 0.0)) continue;
