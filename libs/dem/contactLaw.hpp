@@ -580,6 +580,12 @@ RF_HD inline int nearEdges(const unsigned char* edges, int n_edges, const Vec3* 
     return n;
 }
 
+// A triangle's normal on its winding side, its length twice the area.
+RF_HD inline Vec3 areaNormal(const Vec3* p)
+{
+    return cross(p[1] - p[0], p[2] - p[0]);
+}
+
 // Whether edge a of core A and edge b of core B can have passed through each other: the
 // closest points of the segments (on_a, on_b) lie inside both segments, where they are the
 // closest points of the two lines, and the lines' common normal c points out of A at a and
@@ -706,15 +712,15 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
             double distance = norm(gap);
             PatchPoint pt;
             Vec3 crossing;
-            if (cut &&
+            if (cut && distance < reach &&
                 crossingNormal(a0, a1, b0, b1, on_a, on_b, middle_a - cells.position[ca],
-                               0.5 * (b0 + b1) - cells.position[cb], crossing) &&
-                dot(gap, crossing) > -reach) {
+                               0.5 * (b0 + b1) - cells.position[cb], crossing)) {
                 // Where the cores are cut, two edges facing each other can pass through each
                 // other (two pressed faces sink into each other, their edges crossing): the
                 // distance of their lines, signed positive outside A, continues through zero
                 // and the overlap keeps growing, up to 2 (r_a + r_b) (beyond, the edges are
-                // far apart on the lines' two sides, not crossed).
+                // far apart on the lines' two sides, not crossed; crossed closest points are
+                // inside both segments, so their distance is the lines').
                 distance = dot(gap, crossing);
                 pt.normal = crossing;
             } else {
@@ -795,7 +801,7 @@ struct NearestSums {
             s.distance = distance;
             s.point = q;
         }
-        const Vec3 area_normal = cross(p[1] - p[0], p[2] - p[0]);
+        const Vec3 area_normal = areaNormal(p);
         if (!(norm2(area_normal) > 0.0)) return distance;  // zero area: no normal of its own
         const Vec3 n = normalised(area_normal);
         if (feature == featureFace) {
@@ -953,7 +959,6 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
         const Vec3* local = a.triangle_vertices + 3 * t;
         const Vec3 p[3] = {wall.origin + wall.rotation * local[0], wall.origin + wall.rotation * local[1],
                            wall.origin + wall.rotation * local[2]};
-        const Vec3 triangle_normal = cross(p[1] - p[0], p[2] - p[0]);  // winding side, not unit
         for (int k = 0; k < 3; ++k) {
             if (flags & ridgeBit(k, side)) {
                 const Vec3 r0 = p[k], r1 = p[(k + 1) % 3];
@@ -970,10 +975,14 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                     const Vec3 gap = on_core - on_surface;
                     double distance = norm(gap);
                     PatchPoint pt;
+                    // Only a pair nearer than r_d can have crossed within reach (its closest
+                    // points then lie inside both segments and their distance is the lines'):
+                    // the far pairs of this hot loop skip the test.
                     Vec3 crossing;
-                    if (crossingNormal(r0, r1, x0, x1, on_surface, on_core, side * triangle_normal,
+                    if (distance < radius &&
+                        crossingNormal(r0, r1, x0, x1, on_surface, on_core, side * areaNormal(p),
                                        0.5 * (x0 + x1) - core.position, crossing) &&
-                        !(dot(gap, crossing) > 0.0) && dot(gap, crossing) > -radius) {
+                        !(dot(gap, crossing) > 0.0)) {
                         // The ridge has passed through the core edge (the core is r_d deep):
                         // the lines' signed distance continues through zero, so the overlap
                         // keeps growing (up to 2 r_d) and still derives from the potential.

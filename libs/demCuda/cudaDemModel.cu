@@ -508,12 +508,12 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
 {
     const CellArrays& c = host.cells_;
     const std::size_t n = c.position.size();
-    std::size_t total = arrayBytes(c.position) + arrayBytes(c.velocity) + arrayBytes(c.orientation) +
-                        arrayBytes(c.angular_velocity) + arrayBytes(c.force) + arrayBytes(c.torque) +
-                        arrayBytes(c.mass) + arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) +
-                        arrayBytes(c.bounding_radius) + arrayBytes(c.core_vertex_offset) +
-                        arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) +
-                        arrayBytes(c.core_edges) + arrayBytes(c.core_plane_offset) + arrayBytes(c.core_planes);
+    std::size_t total =
+        arrayBytes(c.position) + arrayBytes(c.velocity) + arrayBytes(c.orientation) +
+        arrayBytes(c.angular_velocity) + arrayBytes(c.force) + arrayBytes(c.torque) + arrayBytes(c.mass) +
+        arrayBytes(c.principal_inertia) + arrayBytes(c.dilation_radius) + arrayBytes(c.bounding_radius) +
+        arrayBytes(c.core_vertex_offset) + arrayBytes(c.core_vertices) + arrayBytes(c.core_edge_offset) +
+        arrayBytes(c.core_edges) + arrayBytes(c.core_plane_offset) + arrayBytes(c.core_planes);
     total += n * (sizeof(Mat3) + 2 * sizeof(Vec3));  // rotation, world angular velocity, position at build
     const InterfaceArrays& f = host.interfaces_;
     total += arrayBytes(f.cell_i) + arrayBytes(f.cell_j) + arrayBytes(f.bond_offset) +
