@@ -150,6 +150,9 @@ struct CrusherRun::Impl {
         factory->setLiners(std::move(liners));
         if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
         chooseTimeStep();
+        // Steps too long for a cell pressed into many contact points are split (DemModel::step).
+        model->setStepLimit(time.deltaT() / critical.value, critical.bond_frequency,
+                            critical.bond_damping_ratio);
         if (controlDict.found("functions") && controlDict.subDict("functions").found("machine"))
             sampleInterval = controlDict.subDict("functions")
                                  .subDict("machine")
@@ -319,10 +322,10 @@ struct CrusherRun::Impl {
         // the rocks are jammed.
         const DemCounters& counters = model->counters();
         std::snprintf(buffer, sizeof(buffer),
-                      "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d",
+                      "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d  split %ld",
                       model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
                       counters.bonds_broken, counters.pair_core_intersections,
-                      counters.core_intersections - counters.pair_core_intersections);
+                      counters.core_intersections - counters.pair_core_intersections, counters.split_steps);
         return buffer;
     }
 };
@@ -411,8 +414,10 @@ int CrusherRun::execute()
             machine.append(r.machineRow());
             r.writeVtk();
         }
-        cellSteps += r.model->cells().size();
+        const long stepsBefore = r.model->counters().steps;
+        const double cellsBefore = r.model->cells().size();
         r.advance();
+        cellSteps += cellsBefore * double(r.model->counters().steps - stepsBefore);  // substeps too
         ++r.step;
         const DemStatus& status = r.model->status();
         if (!status.ok()) throw UserError("step " + std::to_string(r.step) + ": " + status.message());
@@ -442,6 +447,7 @@ int CrusherRun::execute()
         "(fracture %.5g) + carried out %.5g J; balance error %.3g J\n",
         r.mantleWork, e.gravity_work, e.kinetic(), e.stored(), e.dissipated(), e.fracture, e.exchanged,
         e.balance() - r.model->initialBalance());
+    std::printf("%s\n", stepCheckSummary(r.model->counters()).c_str());
     std::printf("Throughput of the solver: %.4g cell-steps/s (%.4g cell-steps in %.4g s wall)\n",
                 cellSteps / std::max(seconds, 1e-9), cellSteps, seconds);
     return exitCode;

@@ -39,6 +39,9 @@ struct ContactOutput {
     double elastic_energy = 0.0;        // stored in the normal and tangential springs [J]
     double damping_power = 0.0;         // viscous dissipation rate, >= 0 [W]
     double friction_dissipation = 0.0;  // energy lost by sliding in this call [J]
+    // Normal stiffness dF/d(overlap) at this overlap, what the step check adds to the
+    // cell's bonds (DemModel::step, docs/theory-dem.md §Integration) [N/m].
+    double stiffness = 0.0;
 };
 
 // One point of a contact patch: the sphere of one core vertex against a wall
@@ -73,6 +76,7 @@ struct ContactPatchOutput {
     double elastic_energy = 0.0;
     double damping_power = 0.0;
     double friction_dissipation = 0.0;
+    double stiffness = 0.0;  // sum of the points' normal stiffnesses [N/m] (ContactOutput)
 };
 
 // Contact status of a pair or wall item after a kernel call.
@@ -141,6 +145,7 @@ struct ContactItemOutputs {
     double* damping_power = nullptr;
     double* friction_dissipation = nullptr;
     unsigned char* status = nullptr;
+    float* stiffness = nullptr;  // ContactOutput::stiffness, 0 when inactive (the step check)
 };
 
 // Energies and counts of a block of contact items, summed in item order.
@@ -170,6 +175,7 @@ RF_HD inline void clearItem(const ContactItemOutputs& o, int item)
         o.friction_dissipation[item] = 0.0;
     }
     o.status[item] = contactNone;
+    o.stiffness[item] = 0.0f;
 }
 
 RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const ContactOutput& out,
@@ -181,6 +187,7 @@ RF_HD inline void storeItem(const ContactItemOutputs& o, int item, const Contact
         o.friction_dissipation[item] = out.friction_dissipation;
     }
     o.status[item] = status;
+    o.stiffness[item] = static_cast<float>(out.stiffness);
 }
 
 struct PairKernelArgs {
@@ -338,6 +345,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         out.elastic_energy = patch.elastic_energy;
         out.damping_power = patch.damping_power;
         out.friction_dissipation = patch.friction_dissipation;
+        out.stiffness = patch.stiffness;
         storeItem(a.items, p, out, status);
         sums.add(out, status);
         a.force_on_b[p] = patch.force;
@@ -1070,6 +1078,7 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     a.items.damping_power[item] = out.damping_power;
     a.items.friction_dissipation[item] = out.friction_dissipation;
     a.items.status[item] = cores_intersect ? contactCoresIntersect : contactActive;
+    a.items.stiffness[item] = static_cast<float>(out.stiffness);
     a.force_on_cell[item] = out.force;
     a.torque_on_cell[item] = out.torque;
     // Power of the force system on the wall's rigid velocity field, about the centroid.

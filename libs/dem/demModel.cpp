@@ -548,6 +548,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(p.force_on_b, keep_pair);
     keepFlagged(p.point_or_torque, keep_pair);
     keepFlagged(p.status, keep_pair);
+    keepFlagged(p.stiffness, keep_pair);
     WallContactArrays& w = wall_items_;
     std::vector<char> keep_item(w.size());
     std::vector<int> triangle_offset(1, 0), triangles;
@@ -572,6 +573,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     keepFlagged(w.friction_dissipation, keep_item);
     keepFlagged(w.wall_power, keep_item);
     keepFlagged(w.status, keep_item);
+    keepFlagged(w.stiffness, keep_item);
 
     buildIncidence();
     energy_floor_ = 0.0;
@@ -895,10 +897,9 @@ CriticalTimeStep DemModel::criticalTimeStep() const
         const double r = cells_.dilation_radius[c];
         const double stiffness = 2.0 * std::max(rock_steel_.effective_modulus, rock_rock_.effective_modulus) *
                                  std::sqrt(r * 0.1 * r);
-        const Vec3 I = cells_.principal_inertia[c];
-        const double arm = cells_.bounding_radius[c];
-        contact_omega2 = std::max(contact_omega2,
-                                  stiffness * (2.0 / cells_.mass[c] + arm * arm / std::min({I.x, I.y, I.z})));
+        contact_omega2 = std::max(
+            contact_omega2, contactFrequency2(stiffness, 0.0, cells_.mass[c], cells_.principal_inertia[c],
+                                              cells_.bounding_radius[c]));
     }
     const double contact_zeta =
         std::sqrt(5.0 / 6.0) * std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
@@ -979,6 +980,7 @@ void DemModel::rebuildNeighbourLists()
     next.force_on_b.assign(m, Vec3{});
     next.point_or_torque.assign(m, Vec3{});
     next.status.assign(m, contactNone);
+    next.stiffness.assign(m, 0.0f);
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
     counters_.contact_pairs_listed = pairs_.size();
@@ -1037,6 +1039,7 @@ void DemModel::buildWallItems()
     next.friction_dissipation.assign(m, 0.0);
     next.wall_power.assign(m, 0.0);
     next.status.assign(m, contactNone);
+    next.stiffness.assign(m, 0.0f);
     wall_items_ = std::move(next);
 }
 
@@ -1162,6 +1165,7 @@ ContactItemOutputs itemOutputs(Arrays& items)
     o.damping_power = items.damping_power.data();
     o.friction_dissipation = items.friction_dissipation.data();
     o.status = items.status.data();
+    o.stiffness = items.stiffness.data();
     return o;
 }
 
@@ -1200,6 +1204,7 @@ void DemModel::runContactKernels(double dt)
     pa.items.tangential_spring = pairs_.tangential_spring.data();
     pa.items.last_normal = pairs_.last_normal.data();
     pa.items.status = pairs_.status.data();  // energies: block sums
+    pa.items.stiffness = pairs_.stiffness.data();
     pa.force_on_b = pairs_.force_on_b.data();
     pa.point_or_torque = pairs_.point_or_torque.data();
     pa.patch = parameters_.cell_contact_patch;
@@ -1281,6 +1286,12 @@ GatherArgs DemModel::gatherArgs()
     a.wall_torque_on_cell = wall_items_.torque_on_cell.data();
     a.force = cells_.force.data();
     a.torque = cells_.torque.data();
+    a.pair_stiffness = pairs_.stiffness.data();
+    a.wall_stiffness = wall_items_.stiffness.data();
+    a.principal_inertia = cells_.principal_inertia.data();
+    a.bounding_radius = cells_.bounding_radius.data();
+    contact_frequency2_.resize(cells_.size());
+    a.contact_frequency2 = contact_frequency2_.data();
     return a;
 }
 
@@ -1291,6 +1302,10 @@ void DemModel::gatherForces()
     const GatherArgs a = gatherArgs();
 #pragma omp parallel for schedule(static) if (n >= parallelMinimumItems())
     for (int c = 0; c < n; ++c) gatherCellForces(a, c);
+    float largest = 0.0f;  // a maximum: the same whatever the thread count
+#pragma omp parallel for schedule(static) reduction(max : largest) if (n >= parallelMinimumItems())
+    for (int c = 0; c < n; ++c) largest = std::max(largest, contact_frequency2_[c]);
+    max_contact_frequency2_ = largest;
 }
 
 void DemModel::computeForces(double dt)
@@ -1442,7 +1457,71 @@ void DemModel::bookFirstHalfKick(double dt)
     }
 }
 
+std::string stepCheckSummary(const DemCounters& counters)
+{
+    std::ostringstream line;
+    line << "Step check: " << counters.split_steps << " step(s) split into substeps";
+    if (counters.split_steps > 0)
+        line << " (" << counters.substeps << " substeps, at most " << counters.most_substeps
+             << " in one step): contacts stiffened a cell beyond the step";
+    return line.str();
+}
+
+void DemModel::setStepLimit(double fraction, double bond_frequency, double bond_damping_ratio)
+{
+    if (!(fraction >= 0.0) || !(bond_frequency >= 0.0) || !(bond_damping_ratio >= 0.0))
+        throw std::invalid_argument("DemModel::setStepLimit: negative or NaN argument");
+    step_limit_.fraction = fraction;
+    step_limit_.bond_frequency2 = bond_frequency * bond_frequency;
+    step_limit_.bond_damping_ratio = bond_damping_ratio;
+    step_limit_.contact_damping_ratio =
+        std::sqrt(5.0 / 6.0) * std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
+}
+
+double DemModel::currentCriticalStep() const
+{
+    // The larger of the bonds' frequency and the stiffest cell's contact bound: the bound
+    // (a trace, gatherCellForces) exceeds the cell's highest contact mode by up to ~3x in
+    // omega^2 for a face pressed flat, which stands in for the bonds' share that the sum
+    // would add; the sum split nearly every step of the Brazilian disc test, whose runs
+    // are stable (docs/theory-dem.md, Integration).
+    const double omega2 = std::max(step_limit_.bond_frequency2, max_contact_frequency2_);
+    if (step_limit_.fraction <= 0.0 || !(omega2 > 0.0)) return 1e300;
+    const double zeta = max_contact_frequency2_ > step_limit_.bond_frequency2
+                            ? step_limit_.contact_damping_ratio
+                            : step_limit_.bond_damping_ratio;
+    return 2.0 * (std::sqrt(1.0 + zeta * zeta) - zeta) / std::sqrt(omega2);
+}
+
+int DemModel::substepsNeeded(double dt) const
+{
+    if (step_limit_.fraction <= 0.0) return 1;
+    const double parts = std::ceil(dt / (step_limit_.fraction * currentCriticalStep()));
+    return parts <= 1.0 ? 1 : static_cast<int>(std::min<double>(parts, max_substeps));
+}
+
+// One step of the caller: velocity Verlet over dt, or over equal substeps when the
+// contacts of the last evaluation have made a cell too stiff for dt (setStepLimit). The
+// number is fixed at the start of the step from its forces (deterministic); walls keep
+// the velocities the caller gave them for the whole step.
 double DemModel::step(double dt)
+{
+    if (!forces_valid_) computeForces(0.0);
+    const int parts = substepsNeeded(dt);
+    if (parts == 1) {
+        singleStep(dt);
+        return time_;
+    }
+    const double start = time_;
+    for (int i = 0; i < parts; ++i) singleStep(dt / parts);
+    time_ = start + dt;
+    ++counters_.split_steps;
+    counters_.substeps += parts;
+    counters_.most_substeps = std::max(counters_.most_substeps, parts);
+    return time_;
+}
+
+void DemModel::singleStep(double dt)
 {
     if (!forces_valid_) computeForces(0.0);
     last_dt_ = dt;
@@ -1454,7 +1533,6 @@ double DemModel::step(double dt)
     time_ += dt;
     ++counters_.steps;
     measureCells(dt);
-    return time_;
 }
 
 // ---- State access -----------------------------------------------------------------
@@ -1671,13 +1749,14 @@ DemMemoryBytes DemModel::memoryUse() const
     const ContactPairArrays& p = pairs_;
     m.pairs = bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
               bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.seat) + bytes(p.force_on_b) +
-              bytes(p.point_or_torque) + bytes(p.status);
+              bytes(p.point_or_torque) + bytes(p.status) + bytes(p.stiffness);
     const WallContactArrays& w = wall_items_;
     m.wall_items = bytes(w.cell) + bytes(w.wall) + bytes(w.triangle_offset) + bytes(w.triangles) +
                    bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +
                    bytes(w.torque_on_cell) + bytes(w.elastic_energy) + bytes(w.damping_power) +
                    bytes(w.friction_dissipation) + bytes(w.wall_power) + bytes(w.status) +
-                   bytes(triangle_vertices_) + bytes(triangle_features_);
+                   bytes(w.stiffness) + bytes(contact_frequency2_) + bytes(triangle_vertices_) +
+                   bytes(triangle_features_);
     m.lists = bytes(cell_interface_offset_) + bytes(cell_interfaces_) + bytes(cell_pair_offset_) +
               bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) +
               bytes(neighbour_cell_) + bytes(neighbour_interface_);

@@ -57,7 +57,15 @@ struct DemCounters {
     int core_intersections = 0;       // contacts this step whose cores are cut (pairs and walls)
     int pair_core_intersections = 0;  // of these, cell–cell pairs
     int shrunk_cores = 0;             // cells whose erosion failed (shrink fallback)
+    // The step check (DemModel::setStepLimit): steps of the caller split into substeps
+    // because contacts had stiffened a cell beyond the step, and the substeps they took.
+    long split_steps = 0;
+    long substeps = 0;
+    int most_substeps = 0;  // of one step
 };
+
+// One line for a solver log: how many steps the step check split (DemModel::setStepLimit).
+std::string stepCheckSummary(const DemCounters& counters);
 
 // What the model's arrays hold, by part [bytes] (bench/, docs/benchmarks.md).
 struct DemMemoryBytes {
@@ -159,7 +167,26 @@ public:
     // bond system by power iteration, with its damping ratio) and of the contacts.
     CriticalTimeStep criticalTimeStep() const;
     // One explicit step; returns the new time. Check status() afterwards.
+    // With a step limit set, a step longer than `fraction` of the current critical step
+    // (the bonds' frequency with the stiffest cell's contacts added) is taken as equal
+    // substeps that are not (counters().split_steps).
     double step(double dt);
+    // The step check (docs/theory-dem.md, Integration): a run's step is chosen at the start
+    // from the bonds and a one-point contact estimate; a cell pressed into many contact
+    // points can be far stiffer. Each step compares dt with fraction x 2 (sqrt(1 + z^2) - z)
+    // / omega, omega^2 = bond_frequency^2 + the largest contact frequency^2 of any cell
+    // (gatherCellForces), z the damping ratio of bonds and contacts weighted by their
+    // omega^2, and splits the step into as many equal substeps as that needs (at most
+    // max_substeps). fraction 0 (the default) switches the check off.
+    void setStepLimit(double fraction, double bond_frequency, double bond_damping_ratio);
+    static constexpr int max_substeps = 1000;
+    // The critical step with the contacts of the last force evaluation [s] (1e300 without
+    // a step limit set).
+    double currentCriticalStep() const;
+    // The stiffest cell's contact bound of the last evaluation [rad^2/s^2], which decides
+    // the next step's split; a restart sets it back (with setCellForces, no re-evaluation).
+    double contactFrequencyBound() const { return max_contact_frequency2_; }
+    void setContactFrequencyBound(double omega2) { max_contact_frequency2_ = omega2; }
     // Forces at the current state without moving anything (histories advance as in a
     // step of length dt). For imposed-kinematics studies and after setting a state.
     void evaluateForces(double dt);
@@ -242,6 +269,8 @@ private:
     void bookFirstHalfKick(double dt);
     void kick(double dt);
     void moveWalls(double dt);
+    void singleStep(double dt);
+    int substepsNeeded(double dt) const;
     BondKernelArgs bondArgs();
     // The softening history with one entry per bond (elastic bonds: zeros), and back:
     // slots are claimed for every interface with a bond past its onset.
@@ -262,6 +291,14 @@ private:
     double smallest_radius_ = 1e300;  // smallest volume-equivalent radius of any cell so far
     double skin_ = 0.0;
     double last_dt_ = 0.0;
+    struct StepLimit {
+        double fraction = 0.0;  // 0: no check
+        double bond_frequency2 = 0.0, bond_damping_ratio = 0.0, contact_damping_ratio = 0.0;
+    } step_limit_;
+    // Per cell, the contacts' squared frequency of the last evaluation (gatherCellForces);
+    // the CUDA backend keeps its own on the device and puts its largest value here.
+    std::vector<float> contact_frequency2_;
+    double max_contact_frequency2_ = 0.0;
 
     CellArrays cells_;
     InterfaceArrays interfaces_;

@@ -106,6 +106,7 @@ struct ContactPairArrays {
     std::vector<Vec3> force_on_b;       // on cell b (a gets the opposite) [N]
     std::vector<Vec3> point_or_torque;  // contact point [m] (point) or torque on b [N m] (patch)
     std::vector<unsigned char> status;  // ContactStatus (energies: summed per block, not stored)
+    std::vector<float> stiffness;       // normal contact stiffness of the last evaluation [N/m]
 
     int size() const { return static_cast<int>(cell_a.size()); }
 };
@@ -118,6 +119,7 @@ struct WallContactArrays {
     std::vector<Vec3> force_on_cell, torque_on_cell;
     std::vector<double> elastic_energy, damping_power, friction_dissipation, wall_power;
     std::vector<unsigned char> status;
+    std::vector<float> stiffness;  // normal contact stiffness of the last evaluation [N/m]
 
     int size() const { return static_cast<int>(cell.size()); }
 };

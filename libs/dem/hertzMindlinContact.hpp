@@ -55,6 +55,7 @@ struct HertzMindlinLaw {
         }
         tangential_spring = spring;
         out.force_on_b = normal_force * n + tangential_force;
+        out.stiffness = normal_stiffness;
         out.elastic_energy = 0.4 * elastic_normal_force * in.overlap +  // 8/15 E* sqrt(R*) delta^(5/2)
                              (tangential_stiffness > 0.0 ? 0.5 * norm2(spring) / tangential_stiffness : 0.0);
         return out;
@@ -84,6 +85,7 @@ struct HertzMindlinLaw {
             velocity += s * p.relative_velocity;
         }
         if (!(stiffness > 0.0)) return out;
+        out.stiffness = stiffness;
         const double normal_damping = damping_factor * std::sqrt(stiffness * in.effective_mass);
         double normal_total = 0.0;
         for (int i = 0; i < in.n_points; ++i) {

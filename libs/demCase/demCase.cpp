@@ -286,6 +286,7 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
     for (int k = 0; k < model.nWalls(); ++k) rates.push_back(model.wallPower(k));
     s.put("forceRates", rates);
     s.putScalar("initialBalance", model.initialBalance());
+    s.putScalar("contactFrequencyBound", model.contactFrequencyBound());  // the step check
     s.putScalar("time", model.time());
     s.put("step", std::vector<std::int64_t>{step});
     s.putScalar("peakForce", peakForce);
@@ -378,6 +379,7 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     // have none: the first step then re-evaluates them).
     if (s.has("cell.force"))
         model.setCellForces(s.vectors("cell.force", nCells), s.vectors("cell.torque", nCells));
+    if (s.has("contactFrequencyBound")) model.setContactFrequencyBound(s.scalar("contactFrequencyBound"));
     return r;
 }
 

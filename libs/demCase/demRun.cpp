@@ -109,6 +109,9 @@ struct BondedDemRun::Impl {
         placePlates();
         effects.applyToModel(*model, {model->wall(lowerPlate).origin.z, model->wall(upperPlate).origin.z});
         chooseTimeStep();
+        // Steps too long for a cell pressed into many contact points are split (DemModel::step).
+        model->setStepLimit(time.deltaT() / critical.value, critical.bond_frequency,
+                            critical.bond_damping_ratio);
         readFunctions();
         if (time.restarting()) restoreState();
     }
@@ -416,6 +419,7 @@ int BondedDemRun::execute()
         r.model->energies().externalWork(), r.model->energies().kinetic(), r.model->energies().stored(),
         r.model->energies().dissipated(), r.model->energies().fracture,
         r.model->energies().balance() - r.model->initialBalance());
+    std::printf("%s\n", stepCheckSummary(r.model->counters()).c_str());
     return exitCode;
 }
 

@@ -121,8 +121,9 @@ RF_HD inline ContactSums combine(const ContactSums& a, const ContactSums& b)
 
 struct CellSums {
     double kinetic_translation, kinetic_rotation, gravity_work;
-    double max_move2;     // largest squared displacement since the list build (a maximum)
-    int non_finite_cell;  // lowest index of a non-finite cell, -1 for none
+    double max_move2;               // largest squared displacement since the list build (a maximum)
+    int non_finite_cell;            // lowest index of a non-finite cell, -1 for none
+    double max_contact_frequency2;  // the step check (DemModel::setStepLimit; a maximum)
 };
 RF_HD inline CellSums combine(const CellSums& a, const CellSums& b)
 {
@@ -130,8 +131,13 @@ RF_HD inline CellSums combine(const CellSums& a, const CellSums& b)
                        ? b.non_finite_cell
                        : (b.non_finite_cell < 0 || a.non_finite_cell < b.non_finite_cell ? a.non_finite_cell
                                                                                          : b.non_finite_cell);
-    return {a.kinetic_translation + b.kinetic_translation, a.kinetic_rotation + b.kinetic_rotation,
-            a.gravity_work + b.gravity_work, a.max_move2 > b.max_move2 ? a.max_move2 : b.max_move2, nf};
+    return {a.kinetic_translation + b.kinetic_translation,
+            a.kinetic_rotation + b.kinetic_rotation,
+            a.gravity_work + b.gravity_work,
+            a.max_move2 > b.max_move2 ? a.max_move2 : b.max_move2,
+            nf,
+            a.max_contact_frequency2 > b.max_contact_frequency2 ? a.max_contact_frequency2
+                                                                : b.max_contact_frequency2};
 }
 
 // Tree sum of one value per thread over the block (fixed order); thread 0 writes it.
@@ -265,7 +271,7 @@ __global__ void __launch_bounds__(threads_per_block)
     kickDriftKernel(int n, IntegrationArgs a, double dt, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
-    CellSums s{0.0, 0.0, 0.0, 0.0, -1};
+    CellSums s{0.0, 0.0, 0.0, 0.0, -1, 0.0};
     if (c < n) s.gravity_work = kickDriftCell(a, c, dt);
     blockSum(s, partials);
 }
@@ -280,7 +286,7 @@ __global__ void __launch_bounds__(threads_per_block)
     measureKernel(int n, IntegrationArgs a, double sync_dt, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
-    CellSums s{0.0, 0.0, 0.0, 0.0, -1};
+    CellSums s{0.0, 0.0, 0.0, 0.0, -1, 0.0};
     if (c < n) {
         const CellEnergyTerms t = measureCell(a, c, sync_dt);
         s.kinetic_translation = t.kinetic_translation;
@@ -294,8 +300,17 @@ __global__ void __launch_bounds__(threads_per_block)
     moveSinceBuildKernel(int n, const Vec3* position, const Vec3* position_at_build, CellSums* partials)
 {
     const int c = blockIdx.x * blockDim.x + threadIdx.x;
-    CellSums s{0.0, 0.0, 0.0, 0.0, -1};
+    CellSums s{0.0, 0.0, 0.0, 0.0, -1, 0.0};
     if (c < n) s.max_move2 = norm2(position[c] - position_at_build[c]);
+    blockSum(s, partials);
+}
+
+__global__ void __launch_bounds__(threads_per_block)
+    stiffestCellKernel(int n, const float* contact_frequency2, CellSums* partials)
+{
+    const int c = blockIdx.x * blockDim.x + threadIdx.x;
+    CellSums s{0.0, 0.0, 0.0, 0.0, -1, 0.0};
+    if (c < n) s.max_contact_frequency2 = contact_frequency2[c];
     blockSum(s, partials);
 }
 
@@ -337,11 +352,13 @@ struct CudaDemModel::Buffers {
     DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_point_or_torque;
     DeviceArray<double> pair_margin, pair_seat;
     DeviceArray<unsigned char> pair_status;
+    DeviceArray<float> pair_stiffness;
     // Wall items and walls.
     DeviceArray<int> item_cell, item_wall, item_triangle_offset, item_triangles, cell_wall_item_offset;
     DeviceArray<Vec3> item_spring, item_last_normal, item_force, item_torque;
     DeviceArray<double> item_elastic, item_damping, item_friction, item_power;
     DeviceArray<unsigned char> item_status;
+    DeviceArray<float> item_stiffness, cell_contact_frequency2;
     DeviceArray<WallPose> walls;
     DeviceArray<Vec3> triangle_vertices;
     DeviceArray<std::uint16_t> triangle_features;
@@ -409,6 +426,7 @@ struct CudaDemModel::Buffers {
                               pair_margin.bytes(),
                               pair_seat.bytes(),
                               pair_status.bytes(),
+                              pair_stiffness.bytes(),
                               item_cell.bytes(),
                               item_wall.bytes(),
                               item_triangle_offset.bytes(),
@@ -423,6 +441,8 @@ struct CudaDemModel::Buffers {
                               item_friction.bytes(),
                               item_power.bytes(),
                               item_status.bytes(),
+                              item_stiffness.bytes(),
+                              cell_contact_frequency2.bytes(),
                               walls.bytes(),
                               triangle_vertices.bytes(),
                               triangle_features.bytes(),
@@ -530,14 +550,16 @@ std::size_t CudaDemModel::estimateDeviceBytes(const DemModel& host)
     total += arrayBytes(p.cell_a) + arrayBytes(p.cell_b) + arrayBytes(p.interface) +
              arrayBytes(p.tangential_spring) + arrayBytes(p.last_normal) + arrayBytes(p.separation_margin) +
              arrayBytes(p.seat) + arrayBytes(p.force_on_b) + arrayBytes(p.point_or_torque) +
-             arrayBytes(p.status) + arrayBytes(host.cell_pair_offset_) + arrayBytes(host.cell_pairs_);
+             arrayBytes(p.status) + arrayBytes(p.stiffness) + arrayBytes(host.cell_pair_offset_) +
+             arrayBytes(host.cell_pairs_);
     const WallContactArrays& w = host.wall_items_;
     total += arrayBytes(w.cell) + arrayBytes(w.wall) + arrayBytes(w.triangle_offset) +
              arrayBytes(w.triangles) + arrayBytes(w.tangential_spring) + arrayBytes(w.last_normal) +
              arrayBytes(w.force_on_cell) + arrayBytes(w.torque_on_cell) + arrayBytes(w.elastic_energy) +
              arrayBytes(w.damping_power) + arrayBytes(w.friction_dissipation) + arrayBytes(w.wall_power) +
-             arrayBytes(w.status) + arrayBytes(host.cell_wall_item_offset_) +
-             arrayBytes(host.triangle_vertices_) + arrayBytes(host.triangle_features_);
+             arrayBytes(w.status) + arrayBytes(w.stiffness) + n * sizeof(float) +
+             arrayBytes(host.cell_wall_item_offset_) + arrayBytes(host.triangle_vertices_) +
+             arrayBytes(host.triangle_features_);
     total +=
         (f.cell_i.size() / threads_per_block + 1) * sizeof(BondSums) +
         (p.cell_a.size() / threads_per_block + w.cell.size() / threads_per_block + 2) * sizeof(ContactSums) +
@@ -620,6 +642,7 @@ void CudaDemModel::uploadLists()
     d.pair_force_on_b.upload(p.force_on_b);
     d.pair_point_or_torque.upload(p.point_or_torque);
     d.pair_status.upload(p.status);
+    d.pair_stiffness.upload(p.stiffness);
     d.cell_pair_offset.upload(host_.cell_pair_offset_);
     d.cell_pairs.upload(host_.cell_pairs_);
     const WallContactArrays& w = host_.wall_items_;
@@ -636,6 +659,7 @@ void CudaDemModel::uploadLists()
     d.item_friction.upload(w.friction_dissipation);
     d.item_power.upload(w.wall_power);
     d.item_status.upload(w.status);
+    d.item_stiffness.upload(w.stiffness);
     d.cell_wall_item_offset.upload(host_.cell_wall_item_offset_);
     d.pair_sums.resize(blocksFor(p.size()));
     d.item_sums.resize(blocksFor(w.size()));
@@ -805,8 +829,9 @@ void CudaDemModel::computeForces(double dt)
     pa.interface = d.pair_interface.data();
     pa.separation_margin = d.pair_margin.data();
     pa.seat = d.pair_seat.data();
-    pa.items = {d.pair_spring.data(), d.pair_last_normal.data(), nullptr, nullptr, nullptr,
-                d.pair_status.data()};  // energies: summed per thread, not stored
+    pa.items = {d.pair_spring.data(),   d.pair_last_normal.data(), nullptr, nullptr, nullptr,
+                d.pair_status.data(),  // energies: summed per thread, not stored
+                d.pair_stiffness.data()};
     pa.force_on_b = d.pair_force_on_b.data();
     pa.point_or_torque = d.pair_point_or_torque.data();
     pa.patch = host_.parameters_.cell_contact_patch;
@@ -827,8 +852,9 @@ void CudaDemModel::computeForces(double dt)
     wa.item_wall = d.item_wall.data();
     wa.item_triangle_offset = d.item_triangle_offset.data();
     wa.item_triangles = d.item_triangles.data();
-    wa.items = {d.item_spring.data(),  d.item_last_normal.data(), d.item_elastic.data(),
-                d.item_damping.data(), d.item_friction.data(),    d.item_status.data()};
+    wa.items = {d.item_spring.data(),   d.item_last_normal.data(), d.item_elastic.data(),
+                d.item_damping.data(),  d.item_friction.data(),    d.item_status.data(),
+                d.item_stiffness.data()};
     wa.force_on_cell = d.item_force.data();
     wa.torque_on_cell = d.item_torque.data();
     wa.wall_power = d.item_power.data();
@@ -896,8 +922,25 @@ void CudaDemModel::computeForces(double dt)
     ga.wall_torque_on_cell = d.item_torque.data();
     ga.force = d.force.data();
     ga.torque = d.torque.data();
+    ga.pair_stiffness = d.pair_stiffness.data();
+    ga.wall_stiffness = d.item_stiffness.data();
+    ga.principal_inertia = d.principal_inertia.data();
+    ga.bounding_radius = d.bounding_radius.data();
+    if (d.cell_contact_frequency2.size() != static_cast<std::size_t>(n_cells))
+        d.cell_contact_frequency2.resize(n_cells);
+    ga.contact_frequency2 = d.cell_contact_frequency2.data();
     if (n_cells > 0) gatherKernel<<<blocksFor(n_cells), threads_per_block>>>(n_cells, ga);
     check(cudaGetLastError(), "gather kernel");
+    // The stiffest cell for the step check (DemModel::gatherForces).
+    h.max_contact_frequency2_ = 0.0;
+    if (n_cells > 0) {
+        const int blocks = blocksFor(n_cells);
+        stiffestCellKernel<<<blocks, threads_per_block>>>(n_cells, d.cell_contact_frequency2.data(),
+                                                          d.cell_sums.data());
+        check(cudaGetLastError(), "stiffest cell kernel");
+        for (const CellSums& s : downloadPartials(d.cell_sums, blocks))
+            h.max_contact_frequency2_ = std::max(h.max_contact_frequency2_, s.max_contact_frequency2);
+    }
     h.forces_valid_ = true;
 }
 
@@ -951,8 +994,26 @@ void CudaDemModel::evaluateForces(double dt)
     measure(0.0);
 }
 
-// DemModel::step on the device.
+// DemModel::step on the device, with the same split into substeps.
 double CudaDemModel::step(double dt)
+{
+    DemModel& h = host_;
+    if (!h.forces_valid_) computeForces(0.0);
+    const int parts = h.substepsNeeded(dt);
+    if (parts == 1) {
+        singleStep(dt);
+        return h.time_;
+    }
+    const double start = h.time_;
+    for (int i = 0; i < parts; ++i) singleStep(dt / parts);
+    h.time_ = start + dt;
+    ++h.counters_.split_steps;
+    h.counters_.substeps += parts;
+    h.counters_.most_substeps = std::max(h.counters_.most_substeps, parts);
+    return h.time_;
+}
+
+void CudaDemModel::singleStep(double dt)
 {
     Buffers& d = *device_;
     DemModel& h = host_;
@@ -975,7 +1036,6 @@ double CudaDemModel::step(double dt)
     h.time_ += dt;
     ++h.counters_.steps;
     measure(dt);
-    return h.time_;
 }
 
 }  // namespace rockfrac

@@ -72,6 +72,7 @@ public:
 private:
     struct Buffers;  // device arrays (cudaDemModel.cu)
     void computeForces(double dt);
+    void singleStep(double dt);
     void measure(double sync_dt);
     void rebuildListsOnHost();
     void uploadLists();

@@ -707,6 +707,59 @@ TEST_CASE("a cell rattling between two plates with e = 0.3 books what it loses",
     CHECK(largest < 1e-2 * scale);
 }
 
+TEST_CASE(
+    "a cell pressed deep between two plates: the step check splits the steps its contacts make unstable",
+    "[dem][contact][wall][energy][stepcheck]")
+{
+    // Eight core corners 0.4 r_d deep in the plates carry stiffer springs than the one
+    // point at 0.1 r_d the run's step is chosen from (DemModel::criticalTimeStep): a step
+    // five times the critical step the check finds for these contacts (a bound: the
+    // bounce along z, the stiffest mode, is stable to 2.35 times it) is unstable (the energy grows without
+    // bound, as in the jammed cell of the CH660 run, docs/theory-crusher.md); with the step
+    // check each such step is taken as substeps and the energy is kept.
+    DemParameters p = quietContactParameters();
+    p.rock_steel_restitution = 1.0;
+    p.rock_steel_friction = 0.0;
+    const double overlap = 0.4 * contact_dilation;
+    auto run = [&](double fraction, double dt_over_critical, double& deviation, DemCounters& counters) {
+        DemModel model = boxBetweenPlates(p, overlap);
+        model.setCellVelocity(0, {0.0, 0.0, 0.02}, {5.0, -3.0, 1.0});
+        model.setStepLimit(1.0, 0.0, 0.0);  // to read the critical step of these contacts
+        test::evaluateForces(model, 0.0);
+        const double critical = model.currentCriticalStep();
+        model.setStepLimit(fraction, 0.0, 0.0);
+        const double dt = dt_over_critical * critical;
+        const double initial = model.energies().balance();
+        deviation = 0.0;
+        for (int i = 0; i < 400 && model.status().ok(); ++i) {
+            test::step(model, dt);
+            deviation = std::max(deviation, std::fabs(model.energies().balance() - initial) / initial);
+        }
+        counters = model.counters();
+        return model.status().ok();
+    };
+    double deviation = 0.0;
+    DemCounters counters;
+    // No check: the energy runs away.
+    const bool ok_unchecked = run(0.0, 5.0, deviation, counters);
+    INFO("unchecked: ok " << ok_unchecked << ", largest balance deviation " << deviation);
+    CHECK((!ok_unchecked || deviation > 1.0));
+    CHECK(counters.split_steps == 0);
+    // The check at half the critical step: every step split into 10, the energy kept.
+    const bool ok_checked = run(0.5, 5.0, deviation, counters);
+    INFO("checked: largest balance deviation " << deviation << ", split " << counters.split_steps
+                                               << ", substeps " << counters.substeps);
+    CHECK(ok_checked);
+    CHECK(deviation < 1e-3);
+    CHECK(counters.split_steps == 400);
+    CHECK(counters.most_substeps == 10);
+    CHECK(counters.steps == counters.substeps);
+    // A step within the limit is left whole (bitwise the unchecked run).
+    run(0.5, 0.4, deviation, counters);
+    CHECK(counters.split_steps == 0);
+    CHECK(deviation < 1e-3);
+}
+
 TEST_CASE("a block crushed onto a floor read from an STL file moves as on the analytic plate", "[dem][wall]")
 {
     // tests/unit/dem/data/floorPlate.stl: a 100 mm square floor at z = 0 as 32 triangles
