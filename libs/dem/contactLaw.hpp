@@ -110,13 +110,13 @@ RF_HD inline double coreDepthDistance(const CellContactView& cells, int c, const
     double largest = -1e300;
     int facet = cells.core_plane_offset[c];
     for (int f = cells.core_plane_offset[c]; f < cells.core_plane_offset[c + 1]; ++f) {
-        const double d = dot(cells.core_planes[f].normal, local) - cells.core_planes[f].offset;
+        const double d = dot(cells.core_planes[f].normal(), local) - cells.core_planes[f].offset;
         if (d > largest) {
             largest = d;
             facet = f;
         }
     }
-    normal = R * cells.core_planes[facet].normal;
+    normal = R * cells.core_planes[facet].normal();
     return largest;
 }
 

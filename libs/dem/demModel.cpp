@@ -258,13 +258,28 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
         }
         c.core_edge_offset.push_back(static_cast<int>(c.core_edges.size()));
         // The core's facets lie on the cell's face planes moved inward (or scaled, for a
-        // shrunk core), so each cell face normal at the core's support bounds it; redundant
-        // ones (a face eroded away) only lie outside and never decide a depth.
+        // shrunk core), so each cell face normal at the core's support bounds it. Faces eroded
+        // away touch the core in a vertex or an edge only: they lie outside, never decide a
+        // depth, and are left out (a facet holds at least three core vertices).
+        const double on_plane = 1e-6 * std::max(reach, 1e-300);  // the float normal: ~1e-7 reach
         for (const CellPlane& plane : planes) {
-            const Vec3 normal = transposeTimes(R, plane.normal);
+            const Vec3 body = transposeTimes(R, plane.normal);
+            CorePlane stored;
+            stored.normal_x = static_cast<float>(body.x);
+            stored.normal_y = static_cast<float>(body.y);
+            stored.normal_z = static_cast<float>(body.z);
+            const Vec3 normal = stored.normal();                                      // as stored, body frame
+            const std::size_t first = c.core_vertices.size() - core.vertices.size();  // this core's
             double support = -1e300;
-            for (const Vec3& v : core.vertices) support = std::max(support, dot(plane.normal, v));
-            c.core_planes.push_back({normal, support});
+            for (std::size_t k = first; k < c.core_vertices.size(); ++k)
+                support = std::max(support, dot(normal, c.core_vertices[k]));
+            int touching = 0;
+            for (std::size_t k = first; k < c.core_vertices.size(); ++k)
+                touching += dot(normal, c.core_vertices[k]) > support - on_plane;
+            if (touching < 3) continue;
+            stored.offset = static_cast<float>(support);
+            if (double(stored.offset) < support) stored.offset = std::nextafter(stored.offset, 1e30f);
+            c.core_planes.push_back(stored);
         }
         c.core_plane_offset.push_back(static_cast<int>(c.core_planes.size()));
         c.bounding_radius[cell] = reach + dilation;
