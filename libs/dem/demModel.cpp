@@ -268,13 +268,13 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
             stored.normal_x = static_cast<float>(body.x);
             stored.normal_y = static_cast<float>(body.y);
             stored.normal_z = static_cast<float>(body.z);
-            const Vec3 normal = stored.normal();                                      // as stored, body frame
-            const std::size_t first = c.core_vertices.size() - core.vertices.size();  // this core's
+            const Vec3 normal = stored.normal();  // as stored, body frame
+            const std::size_t core_begin = c.core_vertices.size() - core.vertices.size();  // this core's
             double support = -1e300;
-            for (std::size_t k = first; k < c.core_vertices.size(); ++k)
+            for (std::size_t k = core_begin; k < c.core_vertices.size(); ++k)
                 support = std::max(support, dot(normal, c.core_vertices[k]));
             int touching = 0;
-            for (std::size_t k = first; k < c.core_vertices.size(); ++k)
+            for (std::size_t k = core_begin; k < c.core_vertices.size(); ++k)
                 touching += dot(normal, c.core_vertices[k]) > support - on_plane;
             if (touching < 3) continue;
             stored.offset = static_cast<float>(support);
