@@ -816,6 +816,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
             rows.push_back({static_cast<double>(i), hb[static_cast<int>(i)], ha[static_cast<int>(i)]});
             labels += std::string(i ? ", " : "") + "\"" + featureName(obs_[i]) + "\" " + std::to_string(i);
         }
+        // A case judged as calibrated (no baseline parameter free) is not re-fitted.
+        const std::string baselineTitle = nb_ > 0 ? "baseline re-fitted" : "baseline (as calibrated)";
         std::ostringstream g;
         g << stats::gnuplotDataBlock("z", rows) << "set title "
           << stats::gnuplotString(
@@ -824,7 +826,7 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
              "border -1\n"
           << "set xtics (" << labels
           << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
-          << "plot $z using 2 title \"baseline re-fitted\" " << stats::seriesColour(0)
+          << "plot $z using 2 title " << stats::gnuplotString(baselineTitle) << " " << stats::seriesColour(0)
           << ", $z using 3 title " << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)")
           << " " << stats::seriesColour(1) << "\n";
         stats::renderPng(g.str(), dir / "residuals.png", 900, 600);
@@ -847,8 +849,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
                  "grid\n"
               << stats::legendBelowPlot(3)
               << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
-              << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0)
-              << " title \"baseline re-fitted\", "
+              << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0) << " title "
+              << stats::gnuplotString(baselineTitle) << ", "
               << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
               << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
             stats::renderPng(p.str(), dir / "curves.png", 900, 650);
