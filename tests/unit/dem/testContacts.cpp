@@ -760,6 +760,52 @@ TEST_CASE(
     CHECK(deviation < 1e-3);
 }
 
+TEST_CASE("a split run continued from its state and its stored contact bound goes on bitwise",
+          "[dem][contact][wall][stepcheck][restart]")
+{
+    // What a restart does (demState): the state, the histories, the clock, the forces of the
+    // last step and the stiffest cell's contact bound, which decides the next step's split.
+    DemParameters p = quietContactParameters();
+    p.rock_steel_restitution = 1.0;
+    p.rock_steel_friction = 0.0;
+    const double overlap = 0.4 * contact_dilation;
+    DemModel first = boxBetweenPlates(p, overlap);
+    first.setCellVelocity(0, {0.0, 0.0, 0.02}, {5.0, -3.0, 1.0});
+    first.setStepLimit(1.0, 0.0, 0.0);
+    test::evaluateForces(first, 0.0);
+    const double dt = 5.0 * first.currentCriticalStep();
+    first.setStepLimit(0.5, 0.0, 0.0);
+    for (int i = 0; i < 50; ++i) test::step(first, dt);
+    auto continued = [&](bool with_bound) {
+        DemModel next = boxBetweenPlates(p, overlap);
+        next.setStepLimit(0.5, 0.0, 0.0);
+        const CellArrays& c = first.cells();
+        next.setCellState(c.position, c.velocity, c.orientation, c.angular_velocity);
+        next.setContactHistory(first.contactPairs(), first.wallContacts());
+        for (int w = 0; w < first.nWalls(); ++w) next.setWallState(w, first.wall(w));
+        next.setClock(first.time(), first.counters().steps, first.energies(), first.initialBalance());
+        next.setForceRates(first.forceRates());
+        next.setCellForces(c.force, c.torque);
+        if (with_bound) next.setContactFrequencyBound(first.contactFrequencyBound());
+        return next;
+    };
+    DemModel restarted = continued(true);
+    DemModel without_bound = continued(false);
+    for (int i = 0; i < 50; ++i) {
+        test::step(first, dt);
+        test::step(restarted, dt);
+        test::step(without_bound, dt);
+    }
+    const Vec3 x = first.cells().position[0], y = restarted.cells().position[0];
+    CHECK(x.x == y.x);
+    CHECK(x.y == y.y);
+    CHECK(x.z == y.z);
+    CHECK(restarted.counters().split_steps == 50);
+    // Without the bound the first step after the restart is taken whole: another trajectory.
+    CHECK(without_bound.counters().split_steps == 49);
+    CHECK(norm(without_bound.cells().position[0] - x) > 0.0);
+}
+
 TEST_CASE("a block crushed onto a floor read from an STL file moves as on the analytic plate", "[dem][wall]")
 {
     // tests/unit/dem/data/floorPlate.stl: a 100 mm square floor at z = 0 as 32 triangles
