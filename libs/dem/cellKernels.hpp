@@ -45,7 +45,7 @@ struct GatherArgs {
     Vec3* force = nullptr;   // out: total force incl. gravity
     Vec3* torque = nullptr;  // out: about the centroid
     // The step check (DemModel::step): the items' normal contact stiffnesses, summed per
-    // cell into the highest squared frequency its contacts can give it (out).
+    // cell into a bound of the highest squared frequency its contacts can give it (out).
     const float* pair_stiffness = nullptr;
     const float* wall_stiffness = nullptr;
     const Vec3* principal_inertia = nullptr;
@@ -53,12 +53,12 @@ struct GatherArgs {
     float* contact_frequency2 = nullptr;
 };
 
-// Highest squared frequency the contacts of cell c can give it [rad^2/s^2]: the sum S of
-// its contacts' normal stiffnesses on its mass and, acting at up to its bounding radius R,
-// on its smallest moment of inertia: S (1/m + R^2/I_min), with 2/m for cell pairs (the
-// partner moves too). A Gershgorin-type bound of the contact part of the cell's row; the
-// start estimate (criticalTimeStep's contact step) is this for one rock-steel point at an
-// overlap of 0.1 r_d (docs/theory-dem.md, Integration).
+// Bound of the highest squared frequency the contacts of cell c can give it [rad^2/s^2]:
+// the sum S of its contacts' normal stiffnesses on its mass and, acting at up to its
+// bounding radius R, on its smallest moment of inertia: S (1/m + R^2/I_min), with 2/m for
+// cell pairs (the partner moves too). The trace of the mass-normalised contact stiffness
+// with every point at the largest arm; the start estimate (criticalTimeStep's contact
+// step) is this for one rock-steel point at an overlap of 0.1 r_d (docs/theory-dem.md §2).
 RF_HD inline double contactFrequency2(double pair_stiffness, double wall_stiffness, double mass,
                                       const Vec3& inertia, double bounding_radius)
 {
@@ -86,7 +86,7 @@ RF_HD inline void gatherCellForces(const GatherArgs& a, int c)
     double pair_stiffness = 0.0, wall_stiffness = 0.0;
     for (int e = a.pair_offset[c]; e < a.pair_offset[c + 1]; ++e) {
         const int p = a.pair_entries[e] >> 1;
-        if (a.contact_frequency2) pair_stiffness += a.pair_stiffness[p];
+        pair_stiffness += a.pair_stiffness[p];
         if (a.pair_torques) {
             // A patch stores the force and torque on b (not a's too: 24 bytes less per
             // pair); a's follows from the balance of the pair's internal forces: about a's
@@ -115,13 +115,12 @@ RF_HD inline void gatherCellForces(const GatherArgs& a, int c)
     for (int i = a.wall_item_offset[c]; i < a.wall_item_offset[c + 1]; ++i) {
         force += a.wall_force_on_cell[i];
         torque += a.wall_torque_on_cell[i];
-        if (a.contact_frequency2) wall_stiffness += a.wall_stiffness[i];
+        wall_stiffness += a.wall_stiffness[i];
     }
     a.force[c] = force;
     a.torque[c] = torque;
-    if (a.contact_frequency2)
-        a.contact_frequency2[c] = static_cast<float>(contactFrequency2(
-            pair_stiffness, wall_stiffness, a.mass[c], a.principal_inertia[c], a.bounding_radius[c]));
+    a.contact_frequency2[c] = static_cast<float>(contactFrequency2(
+        pair_stiffness, wall_stiffness, a.mass[c], a.principal_inertia[c], a.bounding_radius[c]));
 }
 
 // The cell state the integrator advances.

@@ -262,6 +262,7 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
         // away touch the core in a vertex or an edge only: they lie outside, never decide a
         // depth, and are left out (a facet holds at least three core vertices).
         const double on_plane = 1e-6 * std::max(reach, 1e-300);  // the float normal: ~1e-7 reach
+        const std::size_t core_begin = c.core_vertices.size() - core.vertices.size();  // this core's
         for (const CellPlane& plane : planes) {
             const Vec3 body = transposeTimes(R, plane.normal);
             CorePlane stored;
@@ -269,7 +270,6 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
             stored.normal_y = static_cast<float>(body.y);
             stored.normal_z = static_cast<float>(body.z);
             const Vec3 normal = stored.normal();  // as stored, body frame
-            const std::size_t core_begin = c.core_vertices.size() - core.vertices.size();  // this core's
             double support = -1e300;
             for (std::size_t k = core_begin; k < c.core_vertices.size(); ++k)
                 support = std::max(support, dot(normal, c.core_vertices[k]));
@@ -916,8 +916,7 @@ CriticalTimeStep DemModel::criticalTimeStep() const
             contact_omega2, contactFrequency2(stiffness, 0.0, cells_.mass[c], cells_.principal_inertia[c],
                                               cells_.bounding_radius[c]));
     }
-    const double contact_zeta =
-        std::sqrt(5.0 / 6.0) * std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
+    const double contact_zeta = contactDampingRatio();
     result.contact =
         contact_omega2 > 0.0
             ? 2.0 * (std::sqrt(1.0 + contact_zeta * contact_zeta) - contact_zeta) / std::sqrt(contact_omega2)
@@ -1489,17 +1488,23 @@ void DemModel::setStepLimit(double fraction, double bond_frequency, double bond_
     step_limit_.fraction = fraction;
     step_limit_.bond_frequency2 = bond_frequency * bond_frequency;
     step_limit_.bond_damping_ratio = bond_damping_ratio;
-    step_limit_.contact_damping_ratio =
-        std::sqrt(5.0 / 6.0) * std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
+    step_limit_.contact_damping_ratio = contactDampingRatio();
+}
+
+// Damping ratio of the stiffer-damped contact pairing, sqrt(5/6) |beta_e| (restitution).
+double DemModel::contactDampingRatio() const
+{
+    return std::sqrt(5.0 / 6.0) *
+           std::fabs(std::min(rock_steel_.restitution_beta, rock_rock_.restitution_beta));
 }
 
 double DemModel::currentCriticalStep() const
 {
     // The larger of the bonds' frequency and the stiffest cell's contact bound: the bound
-    // (a trace, gatherCellForces) exceeds the cell's highest contact mode by up to ~3x in
-    // omega^2 for a face pressed flat, which stands in for the bonds' share that the sum
-    // would add; the sum split nearly every step of the Brazilian disc test, whose runs
-    // are stable (docs/theory-dem.md, Integration).
+    // (a trace, gatherCellForces) exceeds the cell's highest contact mode (5.5x in omega^2
+    // for a box cell's face pressed flat on a plate), which stands in for the bonds' share
+    // that the sum would add; the sum split nearly every step of the Brazilian disc test,
+    // whose runs are stable (docs/theory-dem.md §2).
     const double omega2 = std::max(step_limit_.bond_frequency2, max_contact_frequency2_);
     if (step_limit_.fraction <= 0.0 || !(omega2 > 0.0)) return 1e300;
     const double zeta = max_contact_frequency2_ > step_limit_.bond_frequency2
@@ -1515,30 +1520,15 @@ int DemModel::substepsNeeded(double dt) const
     return parts <= 1.0 ? 1 : static_cast<int>(std::min<double>(parts, max_substeps));
 }
 
-// One step of the caller: velocity Verlet over dt, or over equal substeps when the
-// contacts of the last evaluation have made a cell too stiff for dt (setStepLimit). The
-// number is fixed at the start of the step from its forces (deterministic); walls keep
-// the velocities the caller gave them for the whole step.
 double DemModel::step(double dt)
 {
     if (!forces_valid_) computeForces(0.0);
-    const int parts = substepsNeeded(dt);
-    if (parts == 1) {
-        singleStep(dt);
-        return time_;
-    }
-    const double start = time_;
-    for (int i = 0; i < parts; ++i) singleStep(dt / parts);
-    time_ = start + dt;
-    ++counters_.split_steps;
-    counters_.substeps += parts;
-    counters_.most_substeps = std::max(counters_.most_substeps, parts);
-    return time_;
+    return stepInParts(dt, [this](double part) { singleStep(part); });
 }
 
+// Velocity Verlet over dt (forces valid at the start).
 void DemModel::singleStep(double dt)
 {
-    if (!forces_valid_) computeForces(0.0);
     last_dt_ = dt;
     bookFirstHalfKick(dt);
     kickDrift(dt);

@@ -167,17 +167,16 @@ public:
     // bond system by power iteration, with its damping ratio) and of the contacts.
     CriticalTimeStep criticalTimeStep() const;
     // One explicit step; returns the new time. Check status() afterwards.
-    // With a step limit set, a step longer than `fraction` of the current critical step
-    // (the bonds' frequency with the stiffest cell's contacts added) is taken as equal
-    // substeps that are not (counters().split_steps).
+    // With a step limit set, a step longer than `fraction` of currentCriticalStep() is
+    // taken as equal substeps short enough (counters().split_steps).
     double step(double dt);
-    // The step check (docs/theory-dem.md, Integration): a run's step is chosen at the start
-    // from the bonds and a one-point contact estimate; a cell pressed into many contact
-    // points can be far stiffer. Each step compares dt with fraction x 2 (sqrt(1 + z^2) - z)
-    // / omega, omega^2 = bond_frequency^2 + the largest contact frequency^2 of any cell
-    // (gatherCellForces), z the damping ratio of bonds and contacts weighted by their
-    // omega^2, and splits the step into as many equal substeps as that needs (at most
-    // max_substeps). fraction 0 (the default) switches the check off.
+    // The step check (docs/theory-dem.md §2): a run's step is chosen at the start from the
+    // bonds and a one-point contact estimate; a cell pressed into many contact points can be
+    // far stiffer. Each step compares dt with fraction x 2 (sqrt(1 + z^2) - z) / omega,
+    // omega the larger of bond_frequency and the largest contact bound of any cell
+    // (gatherCellForces), z the damping ratio of whichever is larger, and splits the step
+    // into as many equal substeps as that needs (at most max_substeps). fraction 0 (the
+    // default) switches the check off.
     void setStepLimit(double fraction, double bond_frequency, double bond_damping_ratio);
     static constexpr int max_substeps = 1000;
     // The critical step with the contacts of the last force evaluation [s] (1e300 without
@@ -271,6 +270,24 @@ private:
     void moveWalls(double dt);
     void singleStep(double dt);
     int substepsNeeded(double dt) const;
+    double contactDampingRatio() const;
+    // The split of step(): `single` advances by a given length (CPU or CUDA); the number of
+    // parts is fixed at the start of the step from the forces of the last evaluation
+    // (deterministic), and walls keep the velocities the caller gave them for the whole step.
+    template <class SingleStep>
+    double stepInParts(double dt, SingleStep&& single)
+    {
+        const int parts = substepsNeeded(dt);
+        const double start = time_;
+        for (int i = 0; i < parts; ++i) single(dt / parts);
+        time_ = start + dt;  // as singleStep's own time_ += dt when there is one part
+        if (parts > 1) {
+            ++counters_.split_steps;
+            counters_.substeps += parts;
+            counters_.most_substeps = parts > counters_.most_substeps ? parts : counters_.most_substeps;
+        }
+        return time_;
+    }
     BondKernelArgs bondArgs();
     // The softening history with one entry per bond (elastic bonds: zeros), and back:
     // slots are claimed for every interface with a bond past its onset.

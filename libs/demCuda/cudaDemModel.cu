@@ -997,27 +997,14 @@ void CudaDemModel::evaluateForces(double dt)
 // DemModel::step on the device, with the same split into substeps.
 double CudaDemModel::step(double dt)
 {
-    DemModel& h = host_;
-    if (!h.forces_valid_) computeForces(0.0);
-    const int parts = h.substepsNeeded(dt);
-    if (parts == 1) {
-        singleStep(dt);
-        return h.time_;
-    }
-    const double start = h.time_;
-    for (int i = 0; i < parts; ++i) singleStep(dt / parts);
-    h.time_ = start + dt;
-    ++h.counters_.split_steps;
-    h.counters_.substeps += parts;
-    h.counters_.most_substeps = std::max(h.counters_.most_substeps, parts);
-    return h.time_;
+    if (!host_.forces_valid_) computeForces(0.0);
+    return host_.stepInParts(dt, [this](double part) { singleStep(part); });
 }
 
 void CudaDemModel::singleStep(double dt)
 {
     Buffers& d = *device_;
     DemModel& h = host_;
-    if (!h.forces_valid_) computeForces(0.0);
     h.last_dt_ = dt;
     h.bookFirstHalfKick(dt);
     const int n = h.cells_.size();

@@ -30,6 +30,15 @@ DemParameters quietContactParameters()
     return p;
 }
 
+// Cells on walls with elastic (e = 1), frictionless contacts: their energy is conserved.
+DemParameters elasticWallParameters()
+{
+    DemParameters p = quietContactParameters();
+    p.rock_steel_restitution = 1.0;
+    p.rock_steel_friction = 0.0;
+    return p;
+}
+
 double effectiveModulus(double E1, double nu1, double E2, double nu2)
 {
     return 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
@@ -612,6 +621,20 @@ DemModel boxBetweenPlates(const DemParameters& p, double overlap)
     return model;
 }
 
+// The step check's case: a box cell 0.4 r_d deep between two plates (eight stiff corner
+// points), bouncing and rocking; critical receives the critical step of its contact bound
+// (DemModel::currentCriticalStep), and the step limit is left at `fraction`.
+DemModel pressedRockingBox(double fraction, double& critical)
+{
+    DemModel model = boxBetweenPlates(elasticWallParameters(), 0.4 * contact_dilation);
+    model.setCellVelocity(0, {0.0, 0.0, 0.02}, {5.0, -3.0, 1.0});
+    model.setStepLimit(1.0, 0.0, 0.0);  // to read the critical step of these contacts
+    test::evaluateForces(model, 0.0);
+    critical = model.currentCriticalStep();
+    model.setStepLimit(fraction, 0.0, 0.0);
+    return model;
+}
+
 }  // namespace
 
 TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz contact",
@@ -651,9 +674,7 @@ TEST_CASE("a face parallel to a plate: every core corner carries its own Hertz c
 TEST_CASE("a cell rocking between two plates with e = 1, no friction, conserves energy",
           "[dem][contact][wall][energy]")
 {
-    DemParameters p = quietContactParameters();
-    p.rock_steel_restitution = 1.0;  // no contact damping
-    p.rock_steel_friction = 0.0;
+    const DemParameters p = elasticWallParameters();
     DemModel model = boxBetweenPlates(p, 5e-6);
     // Rock about x and y, bounce along z, slide sideways a little.
     model.setCellVelocity(0, {0.01, 0.0, 0.02}, {20.0, -12.0, 3.0});
@@ -714,20 +735,12 @@ TEST_CASE(
     // Eight core corners 0.4 r_d deep in the plates carry stiffer springs than the one
     // point at 0.1 r_d the run's step is chosen from (DemModel::criticalTimeStep): a step
     // five times the critical step the check finds for these contacts (a bound: the
-    // bounce along z, the stiffest mode, is stable to 2.35 times it) is unstable (the energy grows without
-    // bound, as in the jammed cell of the CH660 run, docs/theory-crusher.md); with the step
-    // check each such step is taken as substeps and the energy is kept.
-    DemParameters p = quietContactParameters();
-    p.rock_steel_restitution = 1.0;
-    p.rock_steel_friction = 0.0;
-    const double overlap = 0.4 * contact_dilation;
+    // bounce along z, the stiffest mode, is stable to 2.35 times it) is unstable (the energy
+    // grows without bound, as in the jammed cell of the CH660 run, docs/theory-crusher.md);
+    // with the step check each such step is taken as substeps and the energy is kept.
     auto run = [&](double fraction, double dt_over_critical, double& deviation, DemCounters& counters) {
-        DemModel model = boxBetweenPlates(p, overlap);
-        model.setCellVelocity(0, {0.0, 0.0, 0.02}, {5.0, -3.0, 1.0});
-        model.setStepLimit(1.0, 0.0, 0.0);  // to read the critical step of these contacts
-        test::evaluateForces(model, 0.0);
-        const double critical = model.currentCriticalStep();
-        model.setStepLimit(fraction, 0.0, 0.0);
+        double critical = 0.0;
+        DemModel model = pressedRockingBox(fraction, critical);
         const double dt = dt_over_critical * critical;
         const double initial = model.energies().balance();
         deviation = 0.0;
@@ -754,7 +767,7 @@ TEST_CASE(
     CHECK(counters.split_steps == 400);
     CHECK(counters.most_substeps == 10);
     CHECK(counters.steps == counters.substeps);
-    // A step within the limit is left whole (bitwise the unchecked run).
+    // A step within the limit is left whole.
     run(0.5, 0.4, deviation, counters);
     CHECK(counters.split_steps == 0);
     CHECK(deviation < 1e-3);
@@ -765,19 +778,12 @@ TEST_CASE("a split run continued from its state and its stored contact bound goe
 {
     // What a restart does (demState): the state, the histories, the clock, the forces of the
     // last step and the stiffest cell's contact bound, which decides the next step's split.
-    DemParameters p = quietContactParameters();
-    p.rock_steel_restitution = 1.0;
-    p.rock_steel_friction = 0.0;
-    const double overlap = 0.4 * contact_dilation;
-    DemModel first = boxBetweenPlates(p, overlap);
-    first.setCellVelocity(0, {0.0, 0.0, 0.02}, {5.0, -3.0, 1.0});
-    first.setStepLimit(1.0, 0.0, 0.0);
-    test::evaluateForces(first, 0.0);
-    const double dt = 5.0 * first.currentCriticalStep();
-    first.setStepLimit(0.5, 0.0, 0.0);
+    double critical = 0.0;
+    DemModel first = pressedRockingBox(0.5, critical);
+    const double dt = 5.0 * critical;
     for (int i = 0; i < 50; ++i) test::step(first, dt);
     auto continued = [&](bool with_bound) {
-        DemModel next = boxBetweenPlates(p, overlap);
+        DemModel next = boxBetweenPlates(elasticWallParameters(), 0.4 * contact_dilation);
         next.setStepLimit(0.5, 0.0, 0.0);
         const CellArrays& c = first.cells();
         next.setCellState(c.position, c.velocity, c.orientation, c.angular_velocity);
@@ -863,9 +869,7 @@ namespace {
 // is then 37 um deep in the ridge's reach).
 double ridgeRockingError(double ridge_degrees, double tilt_degrees, int& intersections, double dt = 1e-7)
 {
-    DemParameters p = quietContactParameters();
-    p.rock_steel_restitution = 1.0;
-    p.rock_steel_friction = 0.0;
+    const DemParameters p = elasticWallParameters();
     DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
                                       contact_dilation, false),
                    p);
@@ -1092,9 +1096,7 @@ TEST_CASE(
     // rotations of the cell by +-h change the stored energy by -F.dx and -T.dphi (central
     // differences). Rotations about z bring core edges to within 10-20 degrees of the
     // ridge, where a pair's reach depends on its angle and acts with a torque of its own.
-    DemParameters p = quietContactParameters();
-    p.rock_steel_restitution = 1.0;
-    p.rock_steel_friction = 0.0;
+    const DemParameters p = elasticWallParameters();
     DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
                                       contact_dilation, false),
                    p);
