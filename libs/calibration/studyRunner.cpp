@@ -73,8 +73,8 @@ int runForwardingSignals(const std::vector<std::string>& argv, const fs::path& d
     sigaction(SIGINT, &oldInt, nullptr);
     sigaction(SIGTERM, &oldTerm, nullptr);
     if (forwardedSignal)
-        throw UserError("interrupted (signal " + std::to_string(int(forwardedSignal)) +
-                        "); the runs done so far are kept: run the same command again to continue");
+        throw Interrupted("interrupted (signal " + std::to_string(int(forwardedSignal)) +
+                          "); the runs done so far are kept: run the same command again to continue");
     return stats::shellExitStatus(status);
 }
 

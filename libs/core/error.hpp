@@ -17,4 +17,12 @@ public:
     explicit UserError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The user stopped the program (SIGINT/SIGTERM) while it ran simulations: what was done is
+// kept, and no result may be drawn from the runs the stop cut short. Code that tolerates a
+// failed run (and goes on without it) must let this one through.
+class Interrupted : public UserError {
+public:
+    explicit Interrupted(const std::string& message) : UserError(message) {}
+};
+
 }  // namespace rockfrac

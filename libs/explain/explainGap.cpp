@@ -101,6 +101,7 @@ private:
     std::vector<double> sigmaCal_, sigmaHeld_;  // per observed feature
     Eigen::MatrixXd jacobian_;                  // nFeatures x (nb + ne), physical units per parameter unit
     std::vector<double> probeSize_;             // the step of each parameter's probe
+    std::vector<char> probeFailed_;             // its probe's runs failed: not screened
     int simulations_ = 0;
     std::vector<std::string> log_;
 
@@ -282,6 +283,8 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
         trial.values = next;
         try {
             trial.runs = evaluate(next, label + "-" + std::to_string(iteration));
+        } catch (const Interrupted&) {
+            throw;  // stopped by the user: no verdict from cut-short runs
         } catch (const UserError& error) {
             say("  " + label + ": step " + std::to_string(iteration) +
                 " not taken, its runs failed: " + error.what());
@@ -358,15 +361,19 @@ ExplainOutcome Analysis::execute()
         probe = clip(probe);
         step = probe[static_cast<std::size_t>(j)] - theta0_[static_cast<std::size_t>(j)];
         probeSize_.push_back(step);
+        probeFailed_.push_back(0);
         PointRuns runs;
         try {
             runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
+        } catch (const Interrupted&) {
+            throw;  // stopped by the user: no verdict from cut-short runs
         } catch (const UserError& error) {
             // A baseline parameter is needed; an effect whose probe does not run is left out
             // of the screening (its column stays zero, so its score is zero) and said so.
             if (j < nb_) throw;
             say("  " + run_.parameters[static_cast<std::size_t>(j)].name +
                 ": not screened, the runs of its probe failed: " + error.what());
+            probeFailed_.back() = 1;
             continue;
         }
         const FeatureSummary m = runs.summary();
@@ -376,6 +383,11 @@ ExplainOutcome Analysis::execute()
     // What each parameter's probe does to every feature, in standard errors of the
     // calibration half (the signatures the screening tells the effects apart by).
     for (int j = 0; j < nb_ + ne_; ++j) {
+        if (probeFailed_[static_cast<std::size_t>(j)]) {
+            say("  signature of " + run_.parameters[static_cast<std::size_t>(j)].name +
+                ": not measured, its probe failed");
+            continue;
+        }
         std::string row;
         for (std::size_t i = 0; i < obs_.size(); ++i)
             row += std::string(i ? ", " : "") + featureName(obs_[i]) + " " +
@@ -420,6 +432,7 @@ ExplainOutcome Analysis::execute()
         const EffectDescriptor& d = findEffect(s_.effects[static_cast<std::size_t>(e)], "");
         ScreenedEffect se;
         se.name = d.name;
+        se.screened = !probeFailed_[static_cast<std::size_t>(nb_ + e)];
         const Eigen::VectorXd b = projector * whitened({nb_ + e}).col(0);
         projected.push_back(b);
         const double bb = b.squaredNorm();
@@ -441,6 +454,10 @@ ExplainOutcome Analysis::execute()
     });
     for (int e : order) {
         const auto& se = out.screened[static_cast<std::size_t>(e)];
+        if (!se.screened) {
+            say("  screen " + se.name + ": not screened, its probe failed");
+            continue;
+        }
         say("  screen " + se.name + ": score " + format(se.score, 3) + ", p = " + format(se.pValue, 3) +
             (se.wrongSign ? " (the data want it outside its physical range)" : "") + ", linearised " +
             findEffect(se.name, "").parameter + " change " + format(se.amplitude, 3));
@@ -479,6 +496,7 @@ ExplainOutcome Analysis::execute()
             "), is within the model's own scatter (chi-square p = " + format(out.baselinePValue, 3) + ").";
     } else {
         // 5. Confirm the significant candidates by a joint refit, judged on the held-out half.
+        // (An effect whose probe failed has a zero column and score: never a candidate.)
         std::vector<int> candidates;
         for (int e : order)
             if (out.screened[static_cast<std::size_t>(e)].pValue < s_.significance &&
@@ -521,6 +539,8 @@ ExplainOutcome Analysis::execute()
                         const std::string name = "fit-" + se.name + "-scan" + std::to_string(++k);
                         try {
                             trial.runs = evaluate(trial.values, name);
+                        } catch (const Interrupted&) {
+                            throw;  // stopped by the user: no verdict from cut-short runs
                         } catch (const UserError& error) {
                             say("  refit " + se.name + ": scan point " + describeParameter(nb_ + e, value) +
                                 " left out, its runs failed: " + error.what());
@@ -562,6 +582,8 @@ ExplainOutcome Analysis::execute()
                         "-point scan of its range, chi-square " + format(from.chi, 4) + ")");
                 }
                 fit = refit(free, from, "fit-" + se.name, previous);
+            } catch (const Interrupted&) {
+                throw;  // stopped by the user: no verdict from cut-short runs
             } catch (const UserError& error) {
                 say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
                 continue;
@@ -597,6 +619,11 @@ ExplainOutcome Analysis::execute()
                 "explainGap: the gap exceeds the model's scatter (p = " + format(out.baselinePValue, 3) +
                 ") but no effect of the library closes it on the held-out specimens by " +
                 format(100 * s_.minimumGapReduction, 3) + " %; the model misses something else.";
+            std::string unscreened;
+            for (const auto& se : out.screened)
+                if (!se.screened) unscreened += (unscreened.empty() ? "" : ", ") + se.name;
+            if (!unscreened.empty())
+                out.sentence += " (Not screened, their probes failed: " + unscreened + ".)";
         } else {
             const int top = kept.front();
             std::vector<int> twins;
@@ -749,7 +776,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
     for (const auto& se : out.screened)
         screen.rows.push_back(
-            {se.name, format(se.score, 4), format(se.pValue, 3), format(se.amplitude, 4),
+            {se.name, se.screened ? format(se.score, 4) : "-", se.screened ? format(se.pValue, 3) : "-",
+             se.screened ? format(se.amplitude, 4) : "-",
              se.confirmed ? "yes" : "no", se.confirmed ? format(se.value, 4) : "-",
              se.confirmed ? format(se.intervalLow, 4) : "-", se.confirmed ? format(se.intervalHigh, 4) : "-",
              se.confirmed ? format(se.heldOutGap, 3) : "-", se.confirmed ? format(se.reduction, 3) : "-",

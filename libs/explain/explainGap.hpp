@@ -22,7 +22,8 @@ const char* verdictName(Verdict v);
 
 struct ScreenedEffect {
     std::string name;
-    double score = 0.0;  // chi-square reduction of the linearised fit
+    bool screened = true;  // false: its probe's runs failed, so it was not tested
+    double score = 0.0;    // chi-square reduction of the linearised fit
     double pValue = 1.0;
     double amplitude = 0.0;                        // linearised estimate of the parameter change
     bool wrongSign = false;                        // the data want it outside its physical bounds
