@@ -7,6 +7,8 @@
 //     ContactOutput evaluate(const ContactConstants&, const ContactInput&, Vec3& tangential_spring)
 // A new law is a new file (the struct and its two runners, see hertzMindlinContact.*)
 // plus one line in contactLawTable.cpp.
+#include <cfloat>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -130,6 +132,16 @@ RF_HD inline ConvexVertexSet cellCore(const CellContactView& cells, int c)
     return core;
 }
 
+// A pair's separation margin as stored: single precision, never above the double it
+// comes from. The margin is a lower bound on the gap between the two cells; rounded up,
+// it could skip a pair that touches, rounded down it only skips less often.
+RF_HD inline float storedMarginBelow(double margin)
+{
+    float stored = static_cast<float>(margin);
+    if (static_cast<double>(stored) > margin) stored = nextafterf(stored, -FLT_MAX);
+    return stored;
+}
+
 RF_HD inline Vec3 pointVelocity(const CellContactView& cells, int c, const Vec3& point)
 {
     return cells.velocity[c] + cross(cells.angular_velocity_world[c], point - cells.position[c]);
@@ -202,9 +214,10 @@ struct PairKernelArgs {
     const int* interface = nullptr;  // -1 when the pair shares no face
     // Gap between the dilated surfaces at the last GJK call, less a bound on the
     // approach since: while positive the pair cannot touch and GJK is skipped.
-    double* separation_margin = nullptr;
+    float* separation_margin = nullptr;  // rounded down when stored (storedMarginBelow)
     // The overlap a face neighbour's contact started at (its bonds' compression then),
     // taken off every point's overlap; -1 while the pair is apart (docs/theory-dem.md §6).
+    // Patch contacts only (null otherwise).
     double* seat = nullptr;
     ContactItemOutputs items;
     // The patch contact (true) or the single GJK point (false, the paper's contact).
@@ -291,13 +304,14 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
                             (norm(cells.velocity[ca]) + norm(cells.velocity[cb]) +
                              norm(cells.angular_velocity_world[ca]) * cells.bounding_radius[ca] +
                              norm(cells.angular_velocity_world[cb]) * cells.bounding_radius[cb]);
-    a.separation_margin[p] -= approach;
-    if (a.separation_margin[p] > 0.0) return apart();
+    const double margin = a.separation_margin[p] - approach;
+    a.separation_margin[p] = storedMarginBelow(margin);
+    if (margin > 0.0) return apart();
     const double ra = cells.dilation_radius[ca], rb = cells.dilation_radius[cb];
     const Vec3 previous = a.items.last_normal[p];
     const Vec3 fallback = norm2(previous) > 0.0 ? previous : normalised(between);
     const ContactGeometry g = coreGeometry(cellCore(cells, ca), cellCore(cells, cb), ra, rb, fallback);
-    a.separation_margin[p] = g.overlap < 0.0 ? -g.overlap : 0.0;
+    a.separation_margin[p] = storedMarginBelow(g.overlap < 0.0 ? -g.overlap : 0.0);
     if (!(g.overlap > 0.0)) return apart();
     a.items.last_normal[p] = g.normal;
     // The seat. A face neighbour's contact starts at its first broken bond, when its faces

@@ -606,9 +606,8 @@ void DemModel::buildIncidence()
 {
     const int n = cells_.size();
     buildCellIncidence(n, interfaces_.cell_i, interfaces_.cell_j, cell_interface_offset_, cell_interfaces_);
-    // Each cell's interfaces sorted by neighbour, for the pair -> interface lookup.
-    neighbour_offset_ = cell_interface_offset_;
-    neighbour_cell_.resize(cell_interfaces_.size());
+    // Each cell's interfaces sorted by neighbour, for the pair -> interface lookup (the
+    // ranges of cell_interface_offset_; the neighbour is the interface's other cell).
     neighbour_interface_.resize(cell_interfaces_.size());
     for (int c = 0; c < n; ++c) {
         std::vector<std::pair<int, int>> list;
@@ -617,10 +616,8 @@ void DemModel::buildIncidence()
             list.emplace_back(interfaces_.cell_i[k] == c ? interfaces_.cell_j[k] : interfaces_.cell_i[k], k);
         }
         std::sort(list.begin(), list.end());
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            neighbour_cell_[neighbour_offset_[c] + i] = list[i].first;
-            neighbour_interface_[neighbour_offset_[c] + i] = list[i].second;
-        }
+        for (std::size_t i = 0; i < list.size(); ++i)
+            neighbour_interface_[static_cast<std::size_t>(cell_interface_offset_[c]) + i] = list[i].second;
     }
     rotation_.resize(n);
     angular_velocity_world_.resize(n);
@@ -958,16 +955,21 @@ void DemModel::rebuildNeighbourLists()
     for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->reserve(near.size());
     next.tangential_spring.reserve(near.size());
     next.last_normal.reserve(near.size());
-    next.seat.reserve(near.size());
+    // Seats only for patch contacts (8 bytes per pair the point contact never reads).
+    const bool seats = parameters_.cell_contact_patch;
+    if (seats) next.seat.reserve(near.size());
     std::size_t old = 0;
     for (const auto& [a, b] : near) {
         // The interface of the pair, if it shares a bonded face. Pairs whose every bond
         // is intact are left out: when their first bond breaks the lists are rebuilt.
-        const auto begin = neighbour_cell_.begin() + neighbour_offset_[a];
-        const auto end = neighbour_cell_.begin() + neighbour_offset_[a + 1];
-        const auto found = std::lower_bound(begin, end, b);
-        const int iface =
-            found != end && *found == b ? neighbour_interface_[found - neighbour_cell_.begin()] : -1;
+        const auto neighbour = [&](int k) {
+            return interfaces_.cell_i[k] == a ? interfaces_.cell_j[k] : interfaces_.cell_i[k];
+        };
+        const auto begin = neighbour_interface_.begin() + cell_interface_offset_[a];
+        const auto end = neighbour_interface_.begin() + cell_interface_offset_[a + 1];
+        const auto found =
+            std::lower_bound(begin, end, b, [&](int k, int cell) { return neighbour(k) < cell; });
+        const int iface = found != end && neighbour(*found) == b ? *found : -1;
         if (iface >= 0 && interfaces_.intact_bonds[iface] ==
                               interfaces_.bond_offset[iface + 1] - interfaces_.bond_offset[iface])
             continue;
@@ -981,7 +983,7 @@ void DemModel::rebuildNeighbourLists()
         const bool kept = old < pairs_.cell_a.size() && pairs_.cell_a[old] == a && pairs_.cell_b[old] == b;
         next.tangential_spring.push_back(kept ? pairs_.tangential_spring[old] : Vec3{});
         next.last_normal.push_back(kept ? pairs_.last_normal[old] : Vec3{});
-        next.seat.push_back(kept && old < pairs_.seat.size() ? pairs_.seat[old] : -1.0);
+        if (seats) next.seat.push_back(kept && old < pairs_.seat.size() ? pairs_.seat[old] : -1.0);
     }
     // Most near pairs are still bonded and left out: give back what was reserved for them
     // (about half the contact pairs' memory in an intact specimen).
@@ -990,7 +992,7 @@ void DemModel::rebuildNeighbourLists()
     next.last_normal.shrink_to_fit();
     next.seat.shrink_to_fit();
     const std::size_t m = next.cell_a.size();
-    next.separation_margin.assign(m, 0.0);
+    next.separation_margin.assign(m, 0.0f);
     next.force_on_b.assign(m, Vec3{});
     next.point_or_torque.assign(m, Vec3{});
     next.status.assign(m, contactNone);
@@ -1681,6 +1683,7 @@ void DemModel::setContactHistory(const ContactPairArrays& pairs, const WallConta
 {
     // Only keys and springs matter: the next rebuild carries them into fresh lists.
     pairs_ = pairs;
+    if (!parameters_.cell_contact_patch) pairs_.seat.clear();  // point contacts keep no seats
     wall_items_ = wall_items;
     lists_valid_ = forces_valid_ = false;
 }
@@ -1763,8 +1766,7 @@ DemMemoryBytes DemModel::memoryUse() const
                    bytes(w.stiffness) + bytes(contact_frequency2_) + bytes(triangle_vertices_) +
                    bytes(triangle_features_);
     m.lists = bytes(cell_interface_offset_) + bytes(cell_interfaces_) + bytes(cell_pair_offset_) +
-              bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_offset_) +
-              bytes(neighbour_cell_) + bytes(neighbour_interface_);
+              bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_interface_);
     return m;
 }
 

@@ -335,8 +335,9 @@ private:
     std::vector<int> cell_interface_offset_, cell_interfaces_;
     std::vector<int> cell_pair_offset_, cell_pairs_;
     std::vector<int> cell_wall_item_offset_;
-    // Interfaces of each cell sorted by neighbour, for pair -> interface lookup.
-    std::vector<int> neighbour_offset_, neighbour_cell_, neighbour_interface_;
+    // Interfaces of each cell sorted by neighbour (the ranges of cell_interface_offset_),
+    // for the pair -> interface lookup.
+    std::vector<int> neighbour_interface_;
     // Neighbour-list validity.
     std::vector<Vec3> position_at_build_;
     std::vector<Vec3> wall_origin_at_build_;

@@ -101,8 +101,12 @@ struct BondArrays {
 struct ContactPairArrays {
     std::vector<int> cell_a, cell_b, interface;
     std::vector<Vec3> tangential_spring, last_normal;  // history, carried across rebuilds by (a, b)
-    std::vector<double> separation_margin;             // GJK skipping (reset at rebuilds)
-    std::vector<double> seat;           // overlap a face neighbour's contact started at; -1 apart (carried)
+    // GJK skipping (reset at rebuilds): single precision, rounded down, so a stored margin
+    // is never larger than the one computed (the skip stays safe and the forces unchanged).
+    std::vector<float> separation_margin;
+    // Overlap a face neighbour's contact started at; -1 apart (carried). Patch contacts
+    // only: empty when cell contacts are the paper's single point.
+    std::vector<double> seat;
     std::vector<Vec3> force_on_b;       // on cell b (a gets the opposite) [N]
     std::vector<Vec3> point_or_torque;  // contact point [m] (point) or torque on b [N m] (patch)
     std::vector<unsigned char> status;  // ContactStatus (energies: summed per block, not stored)

@@ -259,7 +259,7 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
     s.put("pair.interface", toInt64(p.interface));
     s.put("pair.tangentialSpring", p.tangential_spring);
     s.put("pair.lastNormal", p.last_normal);
-    s.put("pair.seat", p.seat);
+    if (!p.seat.empty()) s.put("pair.seat", p.seat);  // patch contacts only
     s.put("pair.status", std::vector<std::uint8_t>(p.status.begin(), p.status.end()));
 
     const WallContactArrays& w = model.wallContacts();
@@ -322,7 +322,8 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     p.interface = fromInt64<int>(s.integers("pair.interface", nPairs));
     p.tangential_spring = s.vectors("pair.tangentialSpring", nPairs);
     p.last_normal = s.vectors("pair.lastNormal", nPairs);
-    // States written before 2026-12-03 have no seats: every pair starts unseated.
+    // States of point-contact runs, and those written before 2026-12-03, have no seats:
+    // every pair starts unseated.
     p.seat = s.has("pair.seat") ? s.doubles("pair.seat", nPairs) : std::vector<double>(nPairs, -1.0);
     const auto& pairStatus = s.bytes("pair.status", nPairs);
     p.status.assign(pairStatus.begin(), pairStatus.end());

@@ -350,7 +350,8 @@ struct CudaDemModel::Buffers {
     // Contact pairs.
     DeviceArray<int> pair_a, pair_b, pair_interface, cell_pair_offset, cell_pairs;
     DeviceArray<Vec3> pair_spring, pair_last_normal, pair_force_on_b, pair_point_or_torque;
-    DeviceArray<double> pair_margin, pair_seat;
+    DeviceArray<float> pair_margin;
+    DeviceArray<double> pair_seat;  // empty for point contacts
     DeviceArray<unsigned char> pair_status;
     DeviceArray<float> pair_stiffness;
     // Wall items and walls.
