@@ -40,6 +40,12 @@ const char* verdictName(Verdict v)
 
 namespace {
 
+// " Pa" after a value; nothing for a dimensionless one (unit "-" or none).
+std::string unitSuffix(const std::string& unit)
+{
+    return unit.empty() || unit == "-" ? std::string() : " " + unit;
+}
+
 // One half of the measured specimens (calibration or held out).
 struct Half {
     std::vector<std::string> ids;
@@ -161,8 +167,8 @@ private:
               const Fit* previous = nullptr);
     std::string describeParameter(int j, double v) const
     {
-        return run_.parameters[static_cast<std::size_t>(j)].name + " = " + format(v) + " " +
-               run_.parameters[static_cast<std::size_t>(j)].unit;
+        return run_.parameters[static_cast<std::size_t>(j)].name + " = " + format(v) +
+               unitSuffix(run_.parameters[static_cast<std::size_t>(j)].unit);
     }
     void writeOutputs(const ExplainOutcome& outcome, const Fit& baseline, const Fit* effect, int effectIndex);
 };
@@ -689,7 +695,7 @@ ExplainOutcome Analysis::execute()
                 bestFit = fits[static_cast<std::size_t>(top)];
                 const EffectDescriptor& d = findEffect(t.name, "");
                 out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics +
-                               "): " + d.parameter + " = " + format(t.value, 3) + " " + d.unit +
+                               "): " + d.parameter + " = " + format(t.value, 3) + unitSuffix(d.unit) +
                                " (90 % interval " + format(t.intervalLow, 3) + " to " +
                                format(t.intervalHigh, 3) + "); the held-out gap falls by " +
                                format(100 * t.reduction, 3) + " % (from " +
@@ -777,11 +783,11 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     for (const auto& se : out.screened)
         screen.rows.push_back(
             {se.name, se.screened ? format(se.score, 4) : "-", se.screened ? format(se.pValue, 3) : "-",
-             se.screened ? format(se.amplitude, 4) : "-",
-             se.confirmed ? "yes" : "no", se.confirmed ? format(se.value, 4) : "-",
-             se.confirmed ? format(se.intervalLow, 4) : "-", se.confirmed ? format(se.intervalHigh, 4) : "-",
-             se.confirmed ? format(se.heldOutGap, 3) : "-", se.confirmed ? format(se.reduction, 3) : "-",
-             se.confirmed ? format(se.aic, 4) : "-", se.kept ? "yes" : "no"});
+             se.screened ? format(se.amplitude, 4) : "-", se.confirmed ? "yes" : "no",
+             se.confirmed ? format(se.value, 4) : "-", se.confirmed ? format(se.intervalLow, 4) : "-",
+             se.confirmed ? format(se.intervalHigh, 4) : "-", se.confirmed ? format(se.heldOutGap, 3) : "-",
+             se.confirmed ? format(se.reduction, 3) : "-", se.confirmed ? format(se.aic, 4) : "-",
+             se.kept ? "yes" : "no"});
     stats::writeTextTable(dir / "screening.dat", screen);
 
     // Machine-readable result (tests and scripts read it).
@@ -840,8 +846,17 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     try {
         std::vector<std::vector<double>> rows;
         std::string labels;
+        // The bars start at zero: the range must hold it (gnuplot's autoscale fits the bar
+        // ends only, which cut every bar of a one-signed set at its shortest end).
+        double zLow = 0.0, zHigh = 0.0;
         for (std::size_t i = 0; i < obs_.size(); ++i) {
             rows.push_back({static_cast<double>(i), hb[static_cast<int>(i)], ha[static_cast<int>(i)]});
+            for (double z : {hb[static_cast<int>(i)], ha[static_cast<int>(i)]}) {
+                if (std::isfinite(z)) {
+                    zLow = std::min(zLow, z);
+                    zHigh = std::max(zHigh, z);
+                }
+            }
             labels += std::string(i ? ", " : "") + "\"" + featureName(obs_[i]) + "\" " + std::to_string(i);
         }
         // A case judged as calibrated (no baseline parameter free) is not re-fitted.
@@ -854,9 +869,12 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
              "border -1\n"
           << "set xtics (" << labels
           << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
-          << "plot $z using 2 title " << stats::gnuplotString(baselineTitle) << " " << stats::seriesColour(0)
-          << ", $z using 3 title " << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)")
-          << " " << stats::seriesColour(1) << "\n";
+          << "set yrange [" << format(zLow - 0.1 * (zHigh - zLow + 1.0), 4) << ":"
+          << format(zHigh + 0.1 * (zHigh - zLow + 1.0), 4) << "]\n"
+          << stats::legendBelowPlot(2) << "plot $z using 2 title " << stats::gnuplotString(baselineTitle)
+          << " " << stats::seriesColour(0) << ", $z using 3 title "
+          << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << " "
+          << stats::seriesColour(1) << "\n";
         stats::renderPng(g.str(), dir / "residuals.png", 900, 600);
         if (curves_) {
             const double upTo = 1.6 * held_.features.value[peakDisplacement];
