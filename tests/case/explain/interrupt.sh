@@ -17,7 +17,7 @@ grep -q "^measurements \"$src" paperBDT/system/explainGapDict || fail "the measu
 explainGap -case paperBDT > log.1 2>&1 &
 pid=$!
 # Stop it once the effects' probes have started (the baseline and its refit are done).
-for _ in $(seq 1200); do
+for _ in $(seq 6000); do  # up to 10 min on a loaded machine
     ls -d study/runs/probe-*/members/*/log.runCases > /dev/null 2>&1 && break
     kill -0 "$pid" 2> /dev/null || break
     sleep 0.1
