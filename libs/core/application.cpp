@@ -149,6 +149,17 @@ void Application::printBanner() const
               << std::flush;
 }
 
+namespace {
+
+int reportUserError(const AppInfo& info, const char* message)
+{
+    std::cout << std::flush;
+    std::cerr << info.name << ": error: " << message << std::endl;
+    return exitUserError;
+}
+
+}  // namespace
+
 int runApplication(const AppInfo& info, int argc, char** argv, const std::function<int(Application&)>& body)
 {
     try {
@@ -160,9 +171,9 @@ int runApplication(const AppInfo& info, int argc, char** argv, const std::functi
         if (info.banner) app.printBanner();
         return body(app);
     } catch (const UserError& e) {
-        std::cout << std::flush;
-        std::cerr << info.name << ": error: " << e.what() << std::endl;
-        return exitUserError;
+        return reportUserError(info, e.what());
+    } catch (const Interrupted& e) {  // stopped: the message says how to continue
+        return reportUserError(info, e.what());
     } catch (const std::exception& e) {
         std::cout << std::flush;
         std::cerr << info.name << ": internal error: " << e.what()

@@ -18,11 +18,12 @@ public:
 };
 
 // The user stopped the program (SIGINT/SIGTERM) while it ran simulations: what was done is
-// kept, and no result may be drawn from the runs the stop cut short. Code that tolerates a
-// failed run (and goes on without it) must let this one through.
-class Interrupted : public UserError {
+// kept, and no result may be drawn from the runs the stop cut short. Not a UserError, so
+// that code which tolerates a failed run (catching UserError and going on without it) never
+// catches a stop; runApplication reports it like a UserError (exit code 1).
+class Interrupted : public std::runtime_error {
 public:
-    explicit Interrupted(const std::string& message) : UserError(message) {}
+    explicit Interrupted(const std::string& message) : std::runtime_error(message) {}
 };
 
 }  // namespace rockfrac

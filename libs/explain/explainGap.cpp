@@ -289,8 +289,6 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
         trial.values = next;
         try {
             trial.runs = evaluate(next, label + "-" + std::to_string(iteration));
-        } catch (const Interrupted&) {
-            throw;  // stopped by the user: no verdict from cut-short runs
         } catch (const UserError& error) {
             say("  " + label + ": step " + std::to_string(iteration) +
                 " not taken, its runs failed: " + error.what());
@@ -371,8 +369,6 @@ ExplainOutcome Analysis::execute()
         PointRuns runs;
         try {
             runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
-        } catch (const Interrupted&) {
-            throw;  // stopped by the user: no verdict from cut-short runs
         } catch (const UserError& error) {
             // A baseline parameter is needed; an effect whose probe does not run is left out
             // of the screening (its column stays zero, so its score is zero) and said so.
@@ -545,8 +541,6 @@ ExplainOutcome Analysis::execute()
                         const std::string name = "fit-" + se.name + "-scan" + std::to_string(++k);
                         try {
                             trial.runs = evaluate(trial.values, name);
-                        } catch (const Interrupted&) {
-                            throw;  // stopped by the user: no verdict from cut-short runs
                         } catch (const UserError& error) {
                             say("  refit " + se.name + ": scan point " + describeParameter(nb_ + e, value) +
                                 " left out, its runs failed: " + error.what());
@@ -588,8 +582,6 @@ ExplainOutcome Analysis::execute()
                         "-point scan of its range, chi-square " + format(from.chi, 4) + ")");
                 }
                 fit = refit(free, from, "fit-" + se.name, previous);
-            } catch (const Interrupted&) {
-                throw;  // stopped by the user: no verdict from cut-short runs
             } catch (const UserError& error) {
                 say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
                 continue;
