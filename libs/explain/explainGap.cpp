@@ -54,6 +54,23 @@ struct Half {
     std::vector<std::vector<double>> displacement, force;  // empty without curves
 };
 
+// The measured specimens of one test condition, split into the two halves.
+struct ConditionData {
+    std::string name;  // "" for a study of one condition
+    Half cal, held;
+    bool curves = false;
+};
+
+// One compared number: a feature of one condition. The model's features of all
+// conditions are stacked in one vector (condition-major) of nConditions x nFeatures rows.
+struct Observed {
+    int condition = 0, feature = 0;
+};
+
+// The model's features at one point of parameter space, one summary per condition.
+using Summaries = std::vector<FeatureSummary>;
+using RunsPerCondition = std::vector<PointRuns>;
+
 // What each feature needs to be measured, for "the measurement that would separate them".
 const char* measurementFor(int feature)
 {
@@ -86,7 +103,7 @@ public:
     Analysis(ExplainStudy study, int jobs) : s_(std::move(study))
     {
         s_.jobs = jobs;
-        run_ = s_.runStudy();
+        for (std::size_t c = 0; c < s_.conditions.size(); ++c) runs_.push_back(s_.runStudy(c));
         nb_ = static_cast<int>(s_.baseline.size());
         ne_ = static_cast<int>(s_.effects.size());
         splitMeasurements();
@@ -96,18 +113,17 @@ public:
 
 private:
     ExplainStudy s_;
-    calibration::CalibrationStudy run_;
+    std::vector<calibration::CalibrationStudy> runs_;  // one per condition, same parameters
     int nb_ = 0, ne_ = 0;
-    Half cal_, held_;
-    bool curves_ = false;
-    std::vector<int> obs_;  // observed features
+    std::vector<ConditionData> cond_;
+    std::vector<Observed> obs_;  // observed features
     std::vector<double> theta0_;
-    PointRuns base0_;
-    FeatureSummary model0_;
+    RunsPerCondition base0_;
+    Summaries model0_;
     std::vector<double> sigmaCal_, sigmaHeld_;  // per observed feature
-    Eigen::MatrixXd jacobian_;                  // nFeatures x (nb + ne), physical units per parameter unit
-    std::vector<double> probeSize_;             // the step of each parameter's probe
-    std::vector<char> probeFailed_;             // its probe's runs failed: not screened
+    Eigen::MatrixXd jacobian_;  // (nConditions x nFeatures) x (nb + ne), physical units per parameter unit
+    std::vector<double> probeSize_;  // the step of each parameter's probe
+    std::vector<char> probeFailed_;  // its probe's runs failed: not screened
     int simulations_ = 0;
     std::vector<std::string> log_;
 
@@ -119,24 +135,55 @@ private:
 
     void splitMeasurements();
     void readBaselineValues();
-    PointRuns evaluate(const std::vector<double>& values, const std::string& label)
+    const calibration::CalibratedParameter& parameter(int j) const
     {
-        PointRuns r = runPoint(run_, values, label, s_.displacementColumn, s_.forceColumn);
-        simulations_ += static_cast<int>(r.features.size()) + r.failed;
-        return r;
+        return runs_.front().parameters[static_cast<std::size_t>(j)];
     }
-    Eigen::VectorXd residual(const FeatureSummary& model, const Half& half,
-                             const std::vector<double>& sigma) const
+    bool several() const { return cond_.size() > 1; }
+    static int row(const Observed& o) { return o.condition * nFeatures + o.feature; }
+    // "peakForce", or "fast:peakForce" in a study of several conditions.
+    std::string label(const Observed& o) const
+    {
+        return (several() ? cond_[static_cast<std::size_t>(o.condition)].name + ":" : std::string()) +
+               featureName(o.feature);
+    }
+    // One point run in every condition.
+    RunsPerCondition evaluate(const std::vector<double>& values, const std::string& label)
+    {
+        RunsPerCondition all;
+        for (const auto& run : runs_) {
+            PointRuns r = runPoint(run, values, label, s_.displacementColumn, s_.forceColumn);
+            simulations_ += static_cast<int>(r.features.size()) + r.failed;
+            all.push_back(std::move(r));
+        }
+        return all;
+    }
+    Summaries summary(const RunsPerCondition& runs) const
+    {
+        Summaries m;
+        for (const auto& r : runs) m.push_back(r.summary(s_.statistics));
+        return m;
+    }
+    const Half& half(const Observed& o, bool held) const
+    {
+        const ConditionData& c = cond_[static_cast<std::size_t>(o.condition)];
+        return held ? c.held : c.cal;
+    }
+    Eigen::VectorXd residual(const Summaries& model, bool held, const std::vector<double>& sigma) const
     {
         Eigen::VectorXd r(static_cast<int>(obs_.size()));
-        for (std::size_t i = 0; i < obs_.size(); ++i)
-            r[static_cast<int>(i)] = (half.features.value[obs_[i]] - model.value[obs_[i]]) / sigma[i];
+        for (std::size_t i = 0; i < obs_.size(); ++i) {
+            const Observed& o = obs_[i];
+            r[static_cast<int>(i)] = (half(o, held).features.value[o.feature] -
+                                      model[static_cast<std::size_t>(o.condition)].value[o.feature]) /
+                                     sigma[i];
+        }
         return r;
     }
-    double chiCal(const FeatureSummary& m) const { return residual(m, cal_, sigmaCal_).squaredNorm(); }
-    double heldGap(const FeatureSummary& m) const
+    double chiCal(const Summaries& m) const { return residual(m, false, sigmaCal_).squaredNorm(); }
+    double heldGap(const Summaries& m) const
     {
-        return std::sqrt(residual(m, held_, sigmaHeld_).squaredNorm() / static_cast<double>(obs_.size()));
+        return std::sqrt(residual(m, true, sigmaHeld_).squaredNorm() / static_cast<double>(obs_.size()));
     }
     // Whitened sensitivity columns (observed features) of the given parameters.
     Eigen::MatrixXd whitened(const std::vector<int>& parameters) const
@@ -145,21 +192,23 @@ private:
         for (std::size_t i = 0; i < obs_.size(); ++i)
             for (std::size_t j = 0; j < parameters.size(); ++j)
                 m(static_cast<int>(i), static_cast<int>(j)) =
-                    jacobian_(obs_[i], parameters[j]) / sigmaCal_[i];
+                    jacobian_(row(obs_[i]), parameters[j]) / sigmaCal_[i];
         return m;
     }
     std::vector<double> clip(std::vector<double> v) const
     {
-        // run_.parameters holds the baseline parameters first, then one per effect.
-        for (std::size_t j = 0; j < v.size(); ++j)
-            v[j] = std::clamp(v[j], run_.parameters[j].low, run_.parameters[j].high);
+        // The parameters are the baseline's first, then one per effect.
+        for (std::size_t j = 0; j < v.size(); ++j) {
+            const auto& p = parameter(static_cast<int>(j));
+            v[j] = std::clamp(v[j], p.low, p.high);
+        }
         return v;
     }
     // Gauss–Newton refit of `free` parameters from `start` (two steps, each checked by simulation).
     struct Fit {
         std::vector<double> values;
-        PointRuns runs;
-        FeatureSummary model;
+        RunsPerCondition runs;
+        Summaries model;
         double chi = 0.0;
         Eigen::MatrixXd covariance;  // of the free parameters (linearised)
     };
@@ -167,64 +216,71 @@ private:
               const Fit* previous = nullptr);
     std::string describeParameter(int j, double v) const
     {
-        return run_.parameters[static_cast<std::size_t>(j)].name + " = " + format(v) +
-               unitSuffix(run_.parameters[static_cast<std::size_t>(j)].unit);
+        return parameter(j).name + " = " + format(v) + unitSuffix(parameter(j).unit);
     }
     void writeOutputs(const ExplainOutcome& outcome, const Fit& baseline, const Fit* effect, int effectIndex);
 };
 
 void Analysis::splitMeasurements()
 {
-    const auto& specimens = s_.measurements.specimens;
-    const std::size_t n = specimens.size();
-    const std::size_t nHeld =
-        static_cast<std::size_t>(std::lround(s_.heldOutFraction * static_cast<double>(n)));
-    if (n < 6 || nHeld < 3 || n - nHeld < 3)
-        throw UserError(
-            s_.measurementsFile.string() + ": " + std::to_string(n) +
-            " specimens; explainGap fits on some and checks on the others held out (heldOut " +
-            format(s_.heldOutFraction) +
-            "), and each part needs at least 3: give at least 6 specimens, or change heldOut in " +
-            s_.dictionary.string());
-    curves_ =
-        std::all_of(specimens.begin(), specimens.end(), [](const auto& sp) { return sp.curve.has_value(); });
-    // Every k-th specimen is held out, spread over the file order (no cherry-picking).
-    std::vector<CurveFeatures> calCurves, heldCurves;
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool isHeld =
-            static_cast<std::size_t>(
-                std::floor((static_cast<double>(i) + 1) * nHeld / static_cast<double>(n))) >
-            static_cast<std::size_t>(std::floor(static_cast<double>(i) * nHeld / static_cast<double>(n)));
-        Half& h = isHeld ? held_ : cal_;
-        const auto& sp = specimens[i];
-        h.ids.push_back(sp.id);
-        if (curves_) {
-            std::string why;
-            const auto c = curveFeatures(sp.curve->displacement, sp.curve->force, &why);
-            if (!c)
-                throw UserError(
-                    sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
-                    "; explainGap compares curves up to and past the failure: give the whole curve "
-                    "to the load drop, or leave out every curve to compare failure loads only");
-            (isHeld ? heldCurves : calCurves).push_back(*c);
-            h.loads.push_back(c->peakForce);
-            h.displacement.push_back(sp.curve->displacement);
-            h.force.push_back(sp.curve->force);
-        } else {
-            h.loads.push_back(sp.failureLoad);
+    for (const TestCondition& condition : s_.conditions) {
+        ConditionData data;
+        data.name = condition.name;
+        const auto& specimens = condition.measurements.specimens;
+        const std::size_t n = specimens.size();
+        const std::size_t nHeld =
+            static_cast<std::size_t>(std::lround(s_.heldOutFraction * static_cast<double>(n)));
+        if (n < 6 || nHeld < 3 || n - nHeld < 3)
+            throw UserError(
+                condition.measurementsFile.string() + ": " + std::to_string(n) +
+                " specimens; explainGap fits on some and checks on the others held out (heldOut " +
+                format(s_.heldOutFraction) +
+                "), and each part needs at least 3: give at least 6 specimens, or change heldOut in " +
+                s_.dictionary.string());
+        data.curves = std::all_of(specimens.begin(), specimens.end(),
+                                  [](const auto& sp) { return sp.curve.has_value(); });
+        // Every k-th specimen is held out, spread over the file order (no cherry-picking).
+        std::vector<CurveFeatures> calCurves, heldCurves;
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool isHeld =
+                static_cast<std::size_t>(
+                    std::floor((static_cast<double>(i) + 1) * nHeld / static_cast<double>(n))) >
+                static_cast<std::size_t>(std::floor(static_cast<double>(i) * nHeld / static_cast<double>(n)));
+            Half& h = isHeld ? data.held : data.cal;
+            const auto& sp = specimens[i];
+            h.ids.push_back(sp.id);
+            if (data.curves) {
+                std::string why;
+                const auto c = curveFeatures(sp.curve->displacement, sp.curve->force, &why);
+                if (!c)
+                    throw UserError(
+                        sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
+                        "; explainGap compares curves up to and past the failure: give the whole curve "
+                        "to the load drop, or leave out every curve to compare failure loads only");
+                (isHeld ? heldCurves : calCurves).push_back(*c);
+                h.loads.push_back(c->peakForce);
+                h.displacement.push_back(sp.curve->displacement);
+                h.force.push_back(sp.curve->force);
+            } else {
+                h.loads.push_back(sp.failureLoad);
+            }
         }
-    }
-    cal_.features = curves_ ? summarise(calCurves) : summariseFailureLoads(cal_.loads);
-    held_.features = curves_ ? summarise(heldCurves) : summariseFailureLoads(held_.loads);
-    std::vector<int> wanted = s_.requestedFeatures;
-    if (wanted.empty())
-        for (int f = 0; f < nFeatures; ++f) wanted.push_back(f);
-    for (int f : wanted) {
-        if (cal_.features.available[f])
-            obs_.push_back(f);
-        else if (!s_.requestedFeatures.empty())
-            throw UserError(s_.dictionary.string() + ": feature '" + featureName(f) + "' needs curves, and " +
-                            s_.measurementsFile.string() + " has failure loads only");
+        data.cal.features = data.curves ? summarise(calCurves, s_.statistics)
+                                        : summariseFailureLoads(data.cal.loads, s_.statistics);
+        data.held.features = data.curves ? summarise(heldCurves, s_.statistics)
+                                         : summariseFailureLoads(data.held.loads, s_.statistics);
+        std::vector<int> wanted = s_.requestedFeatures;
+        if (wanted.empty())
+            for (int f = 0; f < nFeatures; ++f) wanted.push_back(f);
+        for (int f : wanted) {
+            if (data.cal.features.available[f])
+                obs_.push_back({static_cast<int>(cond_.size()), f});
+            else if (!s_.requestedFeatures.empty())
+                throw UserError(s_.dictionary.string() + ": feature '" + featureName(f) +
+                                "' needs curves, and " + condition.measurementsFile.string() +
+                                " has failure loads only");
+        }
+        cond_.push_back(std::move(data));
     }
 }
 
@@ -232,13 +288,23 @@ void Analysis::readBaselineValues()
 {
     theta0_.clear();
     for (const auto& b : s_.baseline) {
-        const Dictionary d = Dictionary::readFile(s_.targetCase / b.where.file);
-        const double v = d.getScalar(b.where.entry, Bounds::any());
-        if (v < b.where.low || v > b.where.high)
-            throw UserError(s_.dictionary.string() + ": baseline parameter '" + b.where.name + "' is " +
-                            format(v) + " in the case, outside its range (" + format(b.where.low) + " " +
-                            format(b.where.high) + "); widen the range");
-        theta0_.push_back(v);
+        double first = 0.0;
+        for (std::size_t c = 0; c < s_.conditions.size(); ++c) {
+            const fs::path file = s_.conditions[c].targetCase / b.where.file;
+            const Dictionary d = Dictionary::readFile(file);
+            const double v = d.getScalar(b.where.entry, Bounds::any());
+            if (v < b.where.low || v > b.where.high)
+                throw UserError(s_.dictionary.string() + ": baseline parameter '" + b.where.name + "' is " +
+                                format(v) + " in the case, outside its range (" + format(b.where.low) + " " +
+                                format(b.where.high) + "); widen the range");
+            if (c == 0) first = v;
+            if (v != first)
+                throw UserError(file.string() + ": " + b.where.entry + " is " + format(v, 8) + ", and " +
+                                format(first, 8) + " in " + s_.conditions.front().targetCase.string() +
+                                ": the conditions model the same rock, so their cases must start from the "
+                                "same calibrated values; set them equal");
+        }
+        theta0_.push_back(first);
     }
     for (const std::string& name : s_.effects) theta0_.push_back(findEffect(name, "").neutral);
 }
@@ -267,14 +333,14 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
         const double dxdx = dx.squaredNorm();
         if (dxdx <= 0) return;
         const Eigen::VectorXd dm =
-            residual(from.model, cal_, sigmaCal_) - residual(to.model, cal_, sigmaCal_);
+            residual(from.model, false, sigmaCal_) - residual(to.model, false, sigmaCal_);
         A += (dm - A * dx) * dx.transpose() / dxdx;
     };
     if (previous) broyden(*previous, start);
     Fit best = start;
     int worse = 0;
     for (int iteration = 1; iteration <= 3 && worse < 2; ++iteration) {
-        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, cal_, sigmaCal_));
+        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, false, sigmaCal_));
         std::vector<double> next = best.values;
         for (int k = 0; k < n; ++k)
             next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
@@ -294,7 +360,7 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
                 " not taken, its runs failed: " + error.what());
             break;
         }
-        trial.model = trial.runs.summary();
+        trial.model = summary(trial.runs);
         trial.chi = chiCal(trial.model);
         broyden(best, trial);
         if (trial.chi < best.chi) {
@@ -313,16 +379,21 @@ ExplainOutcome Analysis::execute()
 {
     ExplainOutcome out;
     readBaselineValues();
-    say(std::to_string(s_.measurements.specimens.size()) + " specimens in " + s_.measurementsFile.string() +
-        " (" + std::to_string(cal_.ids.size()) + " to fit, " + std::to_string(held_.ids.size()) +
-        " held out), " + (curves_ ? "with curves" : "failure loads only") + "; model case " +
-        s_.targetCase.string() + ", " + std::to_string(s_.seeds.values.size()) +
-        " Voronoi seeds per evaluation");
+    for (std::size_t c = 0; c < cond_.size(); ++c) {
+        const TestCondition& condition = s_.conditions[c];
+        say((several() ? "condition " + condition.name + ": " : std::string()) +
+            std::to_string(condition.measurements.specimens.size()) + " specimens in " +
+            condition.measurementsFile.string() + " (" + std::to_string(cond_[c].cal.ids.size()) +
+            " to fit, " + std::to_string(cond_[c].held.ids.size()) + " held out), " +
+            (cond_[c].curves ? "with curves" : "failure loads only") + "; model case " +
+            condition.targetCase.string() + ", " + std::to_string(s_.seeds.values.size()) +
+            " Voronoi seeds per evaluation");
+    }
     std::string features;
-    for (int f : obs_) features += std::string(features.empty() ? "" : ", ") + featureName(f);
+    for (const Observed& o : obs_) features += std::string(features.empty() ? "" : ", ") + label(o);
     say("features compared: " + features);
 
-    calibration::prepareTemplate(run_);
+    for (const auto& run : runs_) calibration::prepareTemplate(run);
     std::ostringstream body;
     for (const std::string& name : s_.effects) {
         const EffectDescriptor& d = findEffect(name, "");
@@ -332,20 +403,22 @@ ExplainOutcome Analysis::execute()
             body << "    " << entry << " " << value << ";\n";
         body << "}\n";
     }
-    writeTemplateEffects(run_, body.str());
+    for (const auto& run : runs_) writeTemplateEffects(run, body.str());
 
     // 1. The baseline as the case has it, and its scatter over the seeds.
     base0_ = evaluate(theta0_, "baseline");
-    model0_ = base0_.summary();
-    for (int f : obs_) {
-        sigmaCal_.push_back(std::hypot(model0_.standardError[f], cal_.features.standardError[f]));
-        sigmaHeld_.push_back(std::hypot(model0_.standardError[f], held_.features.standardError[f]));
+    model0_ = summary(base0_);
+    for (const Observed& o : obs_) {
+        const double model = model0_[static_cast<std::size_t>(o.condition)].standardError[o.feature];
+        sigmaCal_.push_back(std::hypot(model, half(o, false).features.standardError[o.feature]));
+        sigmaHeld_.push_back(std::hypot(model, half(o, true).features.standardError[o.feature]));
     }
     for (double& v : sigmaCal_) v = std::max(v, 1e-300);
     for (double& v : sigmaHeld_) v = std::max(v, 1e-300);
 
     // 2. Sensitivities: baseline parameters by a relative step, effects by their probe.
-    jacobian_ = Eigen::MatrixXd::Zero(nFeatures, nb_ + ne_);
+    const int rows = static_cast<int>(cond_.size()) * nFeatures;
+    jacobian_ = Eigen::MatrixXd::Zero(rows, nb_ + ne_);
     for (int j = 0; j < nb_ + ne_; ++j) {
         std::vector<double> probe = theta0_;
         double step = 0.0;
@@ -355,10 +428,12 @@ ExplainOutcome Analysis::execute()
             if (theta0_[static_cast<std::size_t>(j)] + step > b.where.high) step = -step;
         } else {
             const EffectDescriptor& d = findEffect(s_.effects[static_cast<std::size_t>(j - nb_)], "");
+            // Scaled by the first condition's response (a probe is one size for all).
             double scale = 1.0;
-            if (d.probeScale == ProbeScale::peakDisplacement) scale = model0_.value[peakDisplacement];
+            const FeatureSummary& m0 = model0_.front();
+            if (d.probeScale == ProbeScale::peakDisplacement) scale = m0.value[peakDisplacement];
             if (d.probeScale == ProbeScale::peakCompliance)
-                scale = model0_.value[peakDisplacement] / model0_.value[peakForce];
+                scale = m0.value[peakDisplacement] / m0.value[peakForce];
             step = d.probe * scale;
         }
         probe[static_cast<std::size_t>(j)] += step;
@@ -366,36 +441,39 @@ ExplainOutcome Analysis::execute()
         step = probe[static_cast<std::size_t>(j)] - theta0_[static_cast<std::size_t>(j)];
         probeSize_.push_back(step);
         probeFailed_.push_back(0);
-        PointRuns runs;
+        RunsPerCondition runs;
         try {
-            runs = evaluate(probe, "probe-" + run_.parameters[static_cast<std::size_t>(j)].name);
+            runs = evaluate(probe, "probe-" + parameter(j).name);
         } catch (const UserError& error) {
             // A baseline parameter is needed; an effect whose probe does not run is left out
             // of the screening (its column stays zero, so its score is zero) and said so.
             if (j < nb_) throw;
-            say("  " + run_.parameters[static_cast<std::size_t>(j)].name +
-                ": not screened, the runs of its probe failed: " + error.what());
+            say("  " + parameter(j).name + ": not screened, the runs of its probe failed: " + error.what());
             probeFailed_.back() = 1;
             continue;
         }
-        const FeatureSummary m = runs.summary();
-        for (int f = 0; f < nFeatures; ++f) jacobian_(f, j) = (m.value[f] - model0_.value[f]) / step;
+        const Summaries m = summary(runs);
+        for (std::size_t c = 0; c < m.size(); ++c)
+            for (int f = 0; f < nFeatures; ++f)
+                jacobian_(static_cast<int>(c) * nFeatures + f, j) =
+                    (m[c].value[f] - model0_[c].value[f]) / step;
     }
 
     // What each parameter's probe does to every feature, in standard errors of the
     // calibration half (the signatures the screening tells the effects apart by).
     for (int j = 0; j < nb_ + ne_; ++j) {
         if (probeFailed_[static_cast<std::size_t>(j)]) {
-            say("  signature of " + run_.parameters[static_cast<std::size_t>(j)].name +
-                ": not measured, its probe failed");
+            say("  signature of " + parameter(j).name + ": not measured, its probe failed");
             continue;
         }
-        std::string row;
+        std::string changes;
         for (std::size_t i = 0; i < obs_.size(); ++i)
-            row += std::string(i ? ", " : "") + featureName(obs_[i]) + " " +
-                   format(jacobian_(obs_[i], j) * probeSize_[static_cast<std::size_t>(j)] / sigmaCal_[i], 2);
-        say("  signature of " + run_.parameters[static_cast<std::size_t>(j)].name + " (probe " +
-            format(probeSize_[static_cast<std::size_t>(j)], 3) + "): " + row);
+            changes +=
+                std::string(i ? ", " : "") + label(obs_[i]) + " " +
+                format(jacobian_(row(obs_[i]), j) * probeSize_[static_cast<std::size_t>(j)] / sigmaCal_[i],
+                       2);
+        say("  signature of " + parameter(j).name + " (probe " +
+            format(probeSize_[static_cast<std::size_t>(j)], 3) + "): " + changes);
     }
 
     // 3. The baseline re-fitted on the calibration half: is what is left beyond the scatter?
@@ -428,7 +506,7 @@ ExplainOutcome Analysis::execute()
     if (nb_ > 0)
         projector -=
             A * (A.transpose() * A).completeOrthogonalDecomposition().pseudoInverse() * A.transpose();
-    const Eigen::VectorXd r = residual(baseline.model, cal_, sigmaCal_);
+    const Eigen::VectorXd r = residual(baseline.model, false, sigmaCal_);
     std::vector<Eigen::VectorXd> projected;
     for (int e = 0; e < ne_; ++e) {
         const EffectDescriptor& d = findEffect(s_.effects[static_cast<std::size_t>(e)], "");
@@ -520,7 +598,7 @@ ExplainOutcome Analysis::execute()
             Fit fit;
             try {
                 from.runs = evaluate(from.values, "fit-" + se.name + "-0");
-                from.model = from.runs.summary();
+                from.model = summary(from.runs);
                 from.chi = chiCal(from.model);
                 const Fit* previous = &baseline;
                 std::vector<Fit> tried;  // the scan's points, when there is a scan
@@ -532,7 +610,8 @@ ExplainOutcome Analysis::execute()
                     // from the best point to each neighbour once, and start the refit there,
                     // with the nearest scanned point as the secant partner of its sensitivities.
                     const std::size_t j = static_cast<std::size_t>(nb_ + e);
-                    const double low = run_.parameters[j].low, high = run_.parameters[j].high;
+                    const double low = parameter(static_cast<int>(j)).low,
+                                 high = parameter(static_cast<int>(j)).high;
                     int k = 0;
                     auto tryValue = [&](double value) {
                         Fit trial = baseline;
@@ -546,7 +625,7 @@ ExplainOutcome Analysis::execute()
                                 " left out, its runs failed: " + error.what());
                             return;
                         }
-                        trial.model = trial.runs.summary();
+                        trial.model = summary(trial.runs);
                         trial.chi = chiCal(trial.model);
                         tried.push_back(std::move(trial));
                     };
@@ -589,10 +668,8 @@ ExplainOutcome Analysis::execute()
             se.confirmed = true;
             se.value = fit.values[static_cast<std::size_t>(nb_ + e)];
             const double sd = std::sqrt(std::max(0.0, fit.covariance(nb_, nb_)));
-            se.intervalLow =
-                std::max(run_.parameters[static_cast<std::size_t>(nb_ + e)].low, se.value - 1.645 * sd);
-            se.intervalHigh =
-                std::min(run_.parameters[static_cast<std::size_t>(nb_ + e)].high, se.value + 1.645 * sd);
+            se.intervalLow = std::max(parameter(nb_ + e).low, se.value - 1.645 * sd);
+            se.intervalHigh = std::min(parameter(nb_ + e).high, se.value + 1.645 * sd);
             se.heldOutGap = heldGap(fit.model);
             se.reduction = out.baselineHeldOutGap > 0 ? 1.0 - se.heldOutGap / out.baselineHeldOutGap : 0.0;
             se.aic = fit.chi + 2.0 * (nb_ + 1);
@@ -644,11 +721,13 @@ ExplainOutcome Analysis::execute()
                 // Which unobserved feature would separate the top two (model sensitivities on every
                 // feature, scaled by the model's scatter, with the baseline projected out)?
                 auto fullDirection = [&](int e) {
-                    Eigen::MatrixXd full(nFeatures, nb_ + 1);
-                    for (int f = 0; f < nFeatures; ++f) {
-                        const double scale = std::max(model0_.standardError[f], 1e-300);
-                        for (int j = 0; j < nb_; ++j) full(f, j) = jacobian_(f, j) / scale;
-                        full(f, nb_) = jacobian_(f, nb_ + e) / scale;
+                    Eigen::MatrixXd full(rows, nb_ + 1);
+                    for (int i = 0; i < rows; ++i) {
+                        const double scale = std::max(
+                            model0_[static_cast<std::size_t>(i / nFeatures)].standardError[i % nFeatures],
+                            1e-300);
+                        for (int j = 0; j < nb_; ++j) full(i, j) = jacobian_(i, j) / scale;
+                        full(i, nb_) = jacobian_(i, nb_ + e) / scale;
                     }
                     const Eigen::MatrixXd B = full.leftCols(nb_);
                     Eigen::VectorXd c = full.col(nb_);
@@ -662,13 +741,18 @@ ExplainOutcome Analysis::execute()
                 if (u.dot(v) < 0) v = -v;
                 int separating = -1;
                 double largest = 0.3;
-                for (int f = 0; f < nFeatures; ++f) {
-                    if (std::find(obs_.begin(), obs_.end(), f) != obs_.end()) continue;
-                    if (std::fabs(u[f] - v[f]) > largest) largest = std::fabs(u[f] - v[f]), separating = f;
+                for (int i = 0; i < rows; ++i) {
+                    if (std::any_of(obs_.begin(), obs_.end(), [&](const Observed& o) { return row(o) == i; }))
+                        continue;
+                    if (std::fabs(u[i] - v[i]) > largest) largest = std::fabs(u[i] - v[i]), separating = i;
                 }
+                const std::string where =
+                    several() && separating >= 0
+                        ? " (condition " + cond_[static_cast<std::size_t>(separating / nFeatures)].name + ")"
+                        : "";
                 out.separatingMeasurement =
                     separating >= 0
-                        ? std::string(measurementFor(separating))
+                        ? std::string(measurementFor(separating % nFeatures)) + where
                         : "no measurement of this test separates them; a test of another geometry "
                           "(e.g. single particle breakage of irregular rocks)";
                 std::string names;
@@ -710,22 +794,25 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     table.names = {"feature",   "measuredFit",     "baseline",       "withEffect",   "zFitBefore",
                    "zFitAfter", "measuredHeldOut", "zHeldOutBefore", "zHeldOutAfter"};
     table.units = {"-", "SI", "SI", "SI", "-", "-", "SI", "-", "-"};
-    const FeatureSummary& after = effect ? effect->model : baseline.model;
-    const Eigen::VectorXd zb = residual(baseline.model, cal_, sigmaCal_),
-                          za = residual(after, cal_, sigmaCal_);
-    const Eigen::VectorXd hb = residual(baseline.model, held_, sigmaHeld_),
-                          ha = residual(after, held_, sigmaHeld_);
+    const Summaries& after = effect ? effect->model : baseline.model;
+    const Eigen::VectorXd zb = residual(baseline.model, false, sigmaCal_),
+                          za = residual(after, false, sigmaCal_);
+    const Eigen::VectorXd hb = residual(baseline.model, true, sigmaHeld_),
+                          ha = residual(after, true, sigmaHeld_);
     for (std::size_t i = 0; i < obs_.size(); ++i) {
-        const int f = obs_[i];
+        const Observed& o = obs_[i];
+        const int f = o.feature;
+        const std::size_t c = static_cast<std::size_t>(o.condition);
         const int k = static_cast<int>(i);
-        table.rows.push_back({std::string(featureName(f)) + "[" + featureUnit(f) + "]",
-                              format(cal_.features.value[f], 6), format(baseline.model.value[f], 6),
-                              format(after.value[f], 6), format(zb[k], 3), format(za[k], 3),
-                              format(held_.features.value[f], 6), format(hb[k], 3), format(ha[k], 3)});
+        table.rows.push_back({label(o) + "[" + featureUnit(f) + "]",
+                              format(cond_[c].cal.features.value[f], 6),
+                              format(baseline.model[c].value[f], 6), format(after[c].value[f], 6),
+                              format(zb[k], 3), format(za[k], 3), format(cond_[c].held.features.value[f], 6),
+                              format(hb[k], 3), format(ha[k], 3)});
     }
     stats::writeTextTable(dir / "gapTable.dat", table);
 
-    // The calibration issue's metrics on the held-out half, before and after.
+    // The calibration issue's metrics on the held-out half, before and after (per condition).
     auto peaks = [](const PointRuns& runs) {
         std::vector<double> p;
         for (const auto& c : runs.features) p.push_back(c.peakForce);
@@ -734,36 +821,41 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     stats::TextTable metrics;
     metrics.names = {"metric", "baseline", "withEffect"};
     metrics.units = {"-", "-", "-"};
-    const PointRuns& afterRuns = effect ? effect->runs : baseline.runs;
-    metrics.rows.push_back({"KS_failureLoads",
-                            format(stats::kolmogorovSmirnov(held_.loads, peaks(baseline.runs)), 3),
-                            format(stats::kolmogorovSmirnov(held_.loads, peaks(afterRuns)), 3)});
-    metrics.rows.push_back({"W1_failureLoads[N]",
-                            format(stats::wasserstein1(held_.loads, peaks(baseline.runs)), 4),
-                            format(stats::wasserstein1(held_.loads, peaks(afterRuns)), 4)});
-    auto relative = [&](const FeatureSummary& m, int f) {
-        return format(100 * (m.value[f] - held_.features.value[f]) / held_.features.value[f], 3);
-    };
-    metrics.rows.push_back(
-        {"peakForceError[%]", relative(baseline.model, peakForce), relative(after, peakForce)});
-    if (curves_) {
-        metrics.rows.push_back({"peakDisplacementError[%]", relative(baseline.model, peakDisplacement),
+    const RunsPerCondition& afterRuns = effect ? effect->runs : baseline.runs;
+    for (std::size_t c = 0; c < cond_.size(); ++c) {
+        const Half& held = cond_[c].held;
+        const PointRuns &before = baseline.runs[c], &withEffect = afterRuns[c];
+        const std::string prefix = several() ? cond_[c].name + ":" : "";
+        metrics.rows.push_back({prefix + "KS_failureLoads",
+                                format(stats::kolmogorovSmirnov(held.loads, peaks(before)), 3),
+                                format(stats::kolmogorovSmirnov(held.loads, peaks(withEffect)), 3)});
+        metrics.rows.push_back({prefix + "W1_failureLoads[N]",
+                                format(stats::wasserstein1(held.loads, peaks(before)), 4),
+                                format(stats::wasserstein1(held.loads, peaks(withEffect)), 4)});
+        auto relative = [&](const Summaries& m, int f) {
+            return format(100 * (m[c].value[f] - held.features.value[f]) / held.features.value[f], 3);
+        };
+        metrics.rows.push_back(
+            {prefix + "peakForceError[%]", relative(baseline.model, peakForce), relative(after, peakForce)});
+        if (!cond_[c].curves) continue;
+        metrics.rows.push_back({prefix + "peakDisplacementError[%]",
+                                relative(baseline.model, peakDisplacement),
                                 relative(after, peakDisplacement)});
-        metrics.rows.push_back({"secantStiffnessError[%]", relative(baseline.model, secantStiffness),
+        metrics.rows.push_back({prefix + "secantStiffnessError[%]", relative(baseline.model, secantStiffness),
                                 relative(after, secantStiffness)});
-        metrics.rows.push_back({"toeIndexDifference",
-                                format(baseline.model.value[toeIndex] - held_.features.value[toeIndex], 3),
-                                format(after.value[toeIndex] - held_.features.value[toeIndex], 3)});
-        const double upTo = held_.features.value[peakDisplacement];
-        const auto measured = meanCurve(held_.displacement, held_.force, upTo, 50);
+        metrics.rows.push_back({prefix + "toeIndexDifference",
+                                format(baseline.model[c].value[toeIndex] - held.features.value[toeIndex], 3),
+                                format(after[c].value[toeIndex] - held.features.value[toeIndex], 3)});
+        const double upTo = held.features.value[peakDisplacement];
+        const auto measured = meanCurve(held.displacement, held.force, upTo, 50);
         auto nrms = [&](const PointRuns& runs) {
             const auto sim = meanCurve(runs.displacement, runs.force, upTo, 50);
             double sum = 0;
             for (std::size_t i = 0; i < sim.size(); ++i)
                 sum += (sim[i] - measured[i]) * (sim[i] - measured[i]);
-            return std::sqrt(sum / static_cast<double>(sim.size())) / held_.features.value[peakForce];
+            return std::sqrt(sum / static_cast<double>(sim.size())) / held.features.value[peakForce];
         };
-        metrics.rows.push_back({"curveNRMS", format(nrms(baseline.runs), 3), format(nrms(afterRuns), 3)});
+        metrics.rows.push_back({prefix + "curveNRMS", format(nrms(before), 3), format(nrms(withEffect), 3)});
     }
     stats::writeTextTable(dir / "gapMetrics.dat", metrics);
 
@@ -805,13 +897,14 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
         for (const auto& line : log_) o << line << "\n";
     });
 
-    // The augmented case: the effect switched on with its fitted size, the baseline re-fitted.
-    if (effect) {
-        const fs::path augmented = dir / "augmentedCase";
-        fs::remove_all(augmented);
+    // The augmented case: the effect switched on with its fitted size, the baseline re-fitted;
+    // with several conditions one per condition (augmentedCase/<condition>).
+    if (effect) fs::remove_all(dir / "augmentedCase");
+    for (std::size_t c = 0; effect && c < cond_.size(); ++c) {
+        const fs::path augmented = several() ? dir / "augmentedCase" / cond_[c].name : dir / "augmentedCase";
         fs::create_directories(augmented);
         for (const char* sub : {"system", "constant"})
-            fs::copy(s_.targetCase / sub, augmented / sub, fs::copy_options::recursive);
+            fs::copy(s_.conditions[c].targetCase / sub, augmented / sub, fs::copy_options::recursive);
         for (int j = 0; j < nb_; ++j) {
             const auto& b = s_.baseline[static_cast<std::size_t>(j)];
             setEntryInFile(augmented / b.where.file, b.where.entry,
@@ -849,7 +942,7 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
                     zHigh = std::max(zHigh, z);
                 }
             }
-            labels += std::string(i ? ", " : "") + "\"" + featureName(obs_[i]) + "\" " + std::to_string(i);
+            labels += std::string(i ? ", " : "") + "\"" + label(obs_[i]) + "\" " + std::to_string(i);
         }
         // A case judged as calibrated (no baseline parameter free) is not re-fitted.
         const std::string baselineTitle = nb_ > 0 ? "baseline re-fitted" : "baseline (as calibrated)";
@@ -867,13 +960,17 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
           << " " << stats::seriesColour(0) << ", $z using 3 title "
           << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << " "
           << stats::seriesColour(1) << "\n";
-        stats::renderPng(g.str(), dir / "residuals.png", 900, 600);
-        if (curves_) {
-            const double upTo = 1.6 * held_.features.value[peakDisplacement];
+        // Wider for the stacked features of several conditions.
+        stats::renderPng(g.str(), dir / "residuals.png",
+                         900 + 60 * std::max(0, static_cast<int>(obs_.size()) - 6), 600);
+        for (std::size_t k = 0; k < cond_.size(); ++k) {
+            if (!cond_[k].curves) continue;
+            const Half& held = cond_[k].held;
+            const double upTo = 1.6 * held.features.value[peakDisplacement];
             const int n = 80;
-            const auto measured = meanCurve(held_.displacement, held_.force, upTo, n);
-            const auto before = meanCurve(baseline.runs.displacement, baseline.runs.force, upTo, n);
-            const auto withEffect = meanCurve(afterRuns.displacement, afterRuns.force, upTo, n);
+            const auto measured = meanCurve(held.displacement, held.force, upTo, n);
+            const auto before = meanCurve(baseline.runs[k].displacement, baseline.runs[k].force, upTo, n);
+            const auto withEffect = meanCurve(afterRuns[k].displacement, afterRuns[k].force, upTo, n);
             std::vector<std::vector<double>> c;
             for (int i = 0; i < n; ++i)
                 c.push_back({1e3 * upTo * i / (n - 1), 1e-3 * measured[static_cast<std::size_t>(i)],
@@ -882,7 +979,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
             std::ostringstream p;
             p << stats::gnuplotDataBlock("c", c) << "set title "
               << stats::gnuplotString(
-                     "Mean force-displacement curves, held-out specimens (aligned at contact onset)")
+                     "Mean force-displacement curves, held-out specimens (aligned at contact onset)" +
+                     (several() ? ", condition " + cond_[k].name : std::string()))
               << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset "
                  "grid\n"
               << stats::legendBelowPlot(3)
@@ -891,7 +989,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
               << stats::gnuplotString(baselineTitle) << ", "
               << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
               << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
-            stats::renderPng(p.str(), dir / "curves.png", 900, 650);
+            stats::renderPng(p.str(), dir / (several() ? "curves-" + cond_[k].name + ".png" : "curves.png"),
+                             900, 650);
         }
     } catch (const UserError& e) {
         say(std::string("plots not drawn: ") + e.what());

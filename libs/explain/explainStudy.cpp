@@ -88,10 +88,12 @@ calibration::CalibrationStudy demRunStudy(const fs::path& directory, const fs::p
 
 }  // namespace
 
-calibration::CalibrationStudy ExplainStudy::runStudy() const
+calibration::CalibrationStudy ExplainStudy::runStudy(std::size_t condition) const
 {
+    const TestCondition& c = conditions.at(condition);
     calibration::CalibrationStudy s =
-        demRunStudy(simulations, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
+        demRunStudy(c.name.empty() ? simulations : simulations / c.name, dictionary, c.targetCase,
+                    prepareCommand, command, jobs, seeds, responseFile);
     for (const auto& b : baseline) s.parameters.push_back(b.where);
     for (const std::string& name : effects) {
         const EffectDescriptor& d = findEffect(name, dictionary.string());
@@ -119,18 +121,47 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
             "missing '" + s.dictionary.string() +
             "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
-    s.targetCase = existingCase(dict, studyDirectory);
-    s.measurementsFile = caseRelative(dict, studyDirectory, "measurements");
-    if (!fs::is_regular_file(s.measurementsFile))
-        throw UserError(dict.location("measurements").str() + ": no measurements file '" +
-                        s.measurementsFile.string() + "'");
-    s.measurements = stats::readMeasurements(s.measurementsFile);
+    auto condition = [&](const Dictionary& d, const std::string& name) {
+        TestCondition c;
+        c.name = name;
+        c.targetCase = existingCase(d, studyDirectory);
+        c.measurementsFile = caseRelative(d, studyDirectory, "measurements");
+        if (!fs::is_regular_file(c.measurementsFile))
+            throw UserError(d.location("measurements").str() + ": no measurements file '" +
+                            c.measurementsFile.string() + "'");
+        c.measurements = stats::readMeasurements(c.measurementsFile);
+        return c;
+    };
+    if (dict.found("conditions")) {
+        if (!dict.isDict("conditions"))
+            throw UserError(dict.location("conditions").str() +
+                            ": 'conditions' must be a dictionary: conditions { slow { case \"../bdt\"; "
+                            "measurements \"...\"; } fast { ... } }");
+        for (const char* key : {"case", "measurements"})
+            if (dict.found(key))
+                throw UserError(dict.location(key).str() + ": '" + key +
+                                "' and 'conditions' together: with conditions, every condition names "
+                                "its own case and measurements; remove the top-level '" +
+                                key + "'");
+        for (const Entry& e : dict.subDict("conditions").entries()) {
+            if (!e.isDict())
+                throw UserError(e.keywordLocation.str() + ": condition '" + e.keyword +
+                                "' must be a dictionary { case \"...\"; measurements \"...\"; }");
+            s.conditions.push_back(condition(*e.dict, e.keyword));
+        }
+        if (s.conditions.empty())
+            throw UserError(dict.location("conditions").str() +
+                            ": no conditions; give at least one { case ...; measurements ...; }");
+    } else {
+        s.conditions.push_back(condition(dict, ""));
+    }
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
     s.simulations =
         dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
-    s.seeds =
-        readSeeds(dict, s.targetCase, 2,
-                  "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
+    for (const TestCondition& c : s.conditions)
+        s.seeds = readSeeds(
+            dict, c.targetCase, 2,
+            "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
 
     if (!dict.isDict("baseline"))
         throw UserError(
@@ -154,10 +185,12 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         b.where.low = range[0];
         b.where.high = range[1];
         b.relativeStep = d.getScalarOrDefault("relativeStep", 0.1, Bounds::open(0, 1));
-        const fs::path file = s.targetCase / b.where.file;
-        if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), b.where.entry, file.string()))
-            throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry +
-                            "' in '" + file.string() + "'");
+        for (const TestCondition& c : s.conditions) {
+            const fs::path file = c.targetCase / b.where.file;
+            if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), b.where.entry, file.string()))
+                throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry +
+                                "' in '" + file.string() + "'");
+        }
         s.baseline.push_back(b);
     }
     if (dict.isDict("tied"))
@@ -207,6 +240,15 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
                     "softening");
             s.requestedFeatures.push_back(index);
         }
+    }
+    if (dict.found("statistics")) {
+        const std::string statistics = dict.get<std::string>("statistics");
+        if (statistics == "median")
+            s.statistics = Statistics::median;
+        else if (statistics != "mean")
+            throw UserError(dict.location("statistics").str() + ": statistics '" + statistics +
+                            "' is not known; use mean (means and standard deviation) or median (medians "
+                            "and the median absolute deviation, robust to an odd specimen)");
     }
     if (dict.found("response")) s.responseFile = dict.get<std::string>("response");
     s.heldOutFraction = dict.getScalarOrDefault("heldOut", 0.5, Bounds::open(0, 1));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calibration/calibrationStudy.hpp"
+#include "explain/responseFeatures.hpp"
 #include "stats/measurements.hpp"
 
 namespace rockfrac::explain {
@@ -18,14 +19,24 @@ struct BaselineParameter {
     double relativeStep = 0.1;               // trial step for its sensitivity
 };
 
-struct ExplainStudy {
-    std::filesystem::path directory, dictionary;
+// One test condition: a model case and the specimens measured under the same conditions
+// (a loading rate, a specimen shape). A study fits all its conditions together: an effect
+// that acts differently in them (the rate effect at two plate speeds) is then told apart
+// from a baseline parameter that acts alike in all.
+struct TestCondition {
+    std::string name;  // "" for the single condition of a study without 'conditions'
     std::filesystem::path targetCase;
     std::filesystem::path measurementsFile;
-    // Where the simulations are kept (<simulations>/runs); studies of the same model case
-    // may share it, so that the baseline and its sensitivities are run once.
-    std::filesystem::path simulations;
     stats::MeasurementSet measurements;
+};
+
+struct ExplainStudy {
+    std::filesystem::path directory, dictionary;
+    std::vector<TestCondition> conditions;  // at least one
+    // Where the simulations are kept (<simulations>/runs, or <simulations>/<condition>/runs
+    // with several conditions); studies of the same model case may share it, so that the
+    // baseline and its sensitivities are run once.
+    std::filesystem::path simulations;
     std::string prepareCommand, command;
     int jobs = 1;
     calibration::SeedList seeds;  // the model's own scatter: every evaluation runs every seed
@@ -34,6 +45,7 @@ struct ExplainStudy {
     std::vector<std::string> effects;                                       // names from the library
     std::map<std::string, std::map<std::string, std::string>> effectFixed;  // effect -> entry -> value
     std::vector<int> requestedFeatures;                                     // empty: every available one
+    Statistics statistics = Statistics::mean;  // how a set of specimens is summarised
     std::filesystem::path responseFile = "postProcessing/plateForce/0/plateForce.dat";
     std::string forceColumn = "force", displacementColumn = "gapChange";
     double heldOutFraction = 0.5;
@@ -41,8 +53,9 @@ struct ExplainStudy {
     double significance = 0.01;
     double indistinguishableAic = 2.0;  // kept effects within this AIC of the best are not told apart
 
-    // A calibration study over baseline + effect parameters, for the runCases helpers.
-    calibration::CalibrationStudy runStudy() const;
+    // A calibration study over baseline + effect parameters, for the runCases helpers:
+    // the runs of one condition.
+    calibration::CalibrationStudy runStudy(std::size_t condition) const;
 };
 
 ExplainStudy readExplainStudy(const std::filesystem::path& studyDirectory);

@@ -19,7 +19,10 @@ struct PointRuns {
     std::vector<CurveFeatures> features;  // per member with a complete curve
     int failed = 0;                       // members that failed or gave no load drop
     std::filesystem::path directory;
-    FeatureSummary summary() const { return summarise(features); }
+    FeatureSummary summary(Statistics statistics = Statistics::mean) const
+    {
+        return summarise(features, statistics);
+    }
 };
 
 // Write the effect entries every run of the study may change into the template's

@@ -108,48 +108,68 @@ std::optional<CurveFeatures> curveFeatures(const std::vector<double>& d, const s
     return c;
 }
 
-FeatureSummary summarise(const std::vector<CurveFeatures>& curves)
+namespace {
+
+// Location, its standard error, spread and its standard error of one sample.
+struct Moments {
+    double location, locationError, spread, spreadError;
+};
+
+Moments moments(const stats::Sample& v, Statistics statistics)
+{
+    const double n = static_cast<double>(v.size());
+    if (statistics == Statistics::median) {
+        const double m = stats::median(v);
+        stats::Sample deviation;
+        for (double x : v) deviation.push_back(std::fabs(x - m));
+        const double s = 1.4826 * stats::median(deviation);
+        return {m, 1.2533 * s / std::sqrt(n), s, 1.1664 * s / std::sqrt(n)};
+    }
+    const double sd = stats::standardDeviation(v);
+    return {stats::mean(v), sd / std::sqrt(n), sd, n > 1 ? sd / std::sqrt(2.0 * (n - 1)) : sd};
+}
+
+}  // namespace
+
+FeatureSummary summarise(const std::vector<CurveFeatures>& curves, Statistics statistics)
 {
     if (curves.empty()) throw std::invalid_argument("summarise: no curves");
     FeatureSummary s;
     s.specimens = static_cast<int>(curves.size());
-    const double n = static_cast<double>(curves.size());
     auto column = [&](double CurveFeatures::*member) {
         stats::Sample v;
         for (const auto& c : curves) v.push_back(c.*member);
         return v;
     };
-    const stats::Sample peaks = column(&CurveFeatures::peakForce);
-    const double peakSd = stats::standardDeviation(peaks);
-    s.value[peakForce] = stats::mean(peaks);
-    s.standardError[peakForce] = peakSd / std::sqrt(n);
-    s.value[peakForceSpread] = peakSd;
-    s.standardError[peakForceSpread] = n > 1 ? peakSd / std::sqrt(2.0 * (n - 1)) : peakSd;
-    const std::pair<Feature, double CurveFeatures::*> means[] = {
+    const Moments peaks = moments(column(&CurveFeatures::peakForce), statistics);
+    s.value[peakForce] = peaks.location;
+    s.standardError[peakForce] = peaks.locationError;
+    s.value[peakForceSpread] = peaks.spread;
+    s.standardError[peakForceSpread] = peaks.spreadError;
+    const std::pair<Feature, double CurveFeatures::*> locations[] = {
         {peakDisplacement, &CurveFeatures::peakDisplacement},
         {secantStiffness, &CurveFeatures::secantStiffness},
         {toeIndex, &CurveFeatures::toeIndex},
         {softening, &CurveFeatures::softening}};
-    for (const auto& [feature, member] : means) {
-        const stats::Sample v = column(member);
-        s.value[feature] = stats::mean(v);
-        s.standardError[feature] = stats::standardDeviation(v) / std::sqrt(n);
+    for (const auto& [feature, member] : locations) {
+        const Moments m = moments(column(member), statistics);
+        s.value[feature] = m.location;
+        s.standardError[feature] = m.locationError;
     }
     s.available.fill(true);
     return s;
 }
 
-FeatureSummary summariseFailureLoads(const std::vector<double>& loads)
+FeatureSummary summariseFailureLoads(const std::vector<double>& loads, Statistics statistics)
 {
     if (loads.empty()) throw std::invalid_argument("summariseFailureLoads: no loads");
     FeatureSummary s;
     s.specimens = static_cast<int>(loads.size());
-    const double n = static_cast<double>(loads.size());
-    const double sd = stats::standardDeviation(loads);
-    s.value[peakForce] = stats::mean(loads);
-    s.standardError[peakForce] = sd / std::sqrt(n);
-    s.value[peakForceSpread] = sd;
-    s.standardError[peakForceSpread] = n > 1 ? sd / std::sqrt(2.0 * (n - 1)) : sd;
+    const Moments m = moments(loads, statistics);
+    s.value[peakForce] = m.location;
+    s.standardError[peakForce] = m.locationError;
+    s.value[peakForceSpread] = m.spread;
+    s.standardError[peakForceSpread] = m.spreadError;
     s.available[peakForce] = s.available[peakForceSpread] = true;
     return s;
 }

@@ -2,7 +2,8 @@
 # explainGap and makeTwinData refuse bad input before any simulation, with one
 # message naming the file and what to do, and exit code 1: too few specimens for
 # the held-out split, a curve without a load drop, an unknown effect, a missing
-# fixed entry of an effect, and an unknown effect in a case's constant/modelEffects.
+# fixed entry of an effect, conditions beside a top-level case or with differently
+# calibrated cases, and an unknown effect in a case's constant/modelEffects.
 source "$(dirname "$0")/../caseTestFunctions"
 copyTutorial tutorials/explainGap "$work/t"
 cd "$work/t"
@@ -34,6 +35,16 @@ expectUserError "unknown model effect 'crumble'; the library has: contactCrumbli
 cp keep study/system/explainGapDict
 sed -i '/contactCrumbling    { depth/d' study/system/explainGapDict
 expectUserError "effectSettings/contactCrumbling/depth is missing" explainGap -case study
+cp keep study/system/explainGapDict
+
+# Several test conditions: each names its own case and measurements (not beside a top-level
+# case), and their cases start from the same calibrated values.
+printf 'conditions\n{\n    slow { case "../bdt"; measurements "../data/measurements"; }\n    fast { case "../bdtOther"; measurements "../data/measurements"; }\n}\n' >> study/system/explainGapDict
+cp -r bdt bdtOther
+expectUserError "'case' and 'conditions' together" explainGap -case study
+sed -i -e '/^case /d' -e '/^measurements /d' study/system/explainGapDict
+sed -i 's/tensileStrength \[1 -1 -2 0 0 0 0\] 31.8e6;/tensileStrength [1 -1 -2 0 0 0 0] 30e6;/' bdtOther/constant/rockProperties
+expectUserError "the conditions model the same rock" explainGap -case study
 cp keep study/system/explainGapDict
 
 printf 'FoamFile { format ascii; class dictionary; object modelEffects; }\nseatingGap { depth 1e-5; }\n' \

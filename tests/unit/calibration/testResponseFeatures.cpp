@@ -73,3 +73,22 @@ TEST_CASE("a curve without a notable drop has no features, and says why", "[expl
     CHECK(why.find("20 %") != std::string::npos);
     CHECK_FALSE(failurePeakIndex(f).has_value());
 }
+
+TEST_CASE("the median summary is not moved by one odd specimen", "[explain][features]")
+{
+    // Eleven specimens near 18 kN and one that chipped at 1.1 kN.
+    std::vector<double> loads = {17.0e3, 17.5e3, 18.0e3, 18.5e3, 19.0e3, 17.2e3,
+                                 18.2e3, 18.8e3, 17.8e3, 18.4e3, 17.6e3, 1.1e3};
+    const FeatureSummary mean = summariseFailureLoads(loads);
+    const FeatureSummary median = summariseFailureLoads(loads, Statistics::median);
+    CHECK(mean.value[peakForce] < 16.7e3);
+    CHECK(mean.value[peakForceSpread] > 4.5e3);
+    CHECK(median.value[peakForce] == Approx(17.9e3));  // (17.8 + 18.0) / 2
+    // Scaled MAD of the eleven: deviations from 17.9 kN, median 0.55 kN (x 1.4826).
+    CHECK(median.value[peakForceSpread] == Approx(1.4826 * 0.55e3).epsilon(1e-9));
+    CHECK(median.standardError[peakForce] == Approx(1.2533 * 1.4826 * 0.55e3 / std::sqrt(12.0)));
+    // Without the odd one, mean and median agree to a fraction of the spread.
+    loads.pop_back();
+    const FeatureSummary clean = summariseFailureLoads(loads);
+    CHECK(std::fabs(clean.value[peakForce] - median.value[peakForce]) < 0.2 * clean.value[peakForceSpread]);
+}

@@ -63,9 +63,11 @@ int run(Application& app)
         }
         if (jobs < 1) throw UserError("-jobs " + *text + ": expected a whole number of at least 1");
     }
-    std::cout << "explainGap: case " << study.targetCase.string() << ", measurements "
-              << study.measurementsFile.string() << " (" << study.measurements.specimens.size()
-              << " specimens), effects:";
+    for (const auto& c : study.conditions)
+        std::cout << "explainGap: " << (c.name.empty() ? "" : "condition " + c.name + ": ") << "case "
+                  << c.targetCase.string() << ", measurements " << c.measurementsFile.string() << " ("
+                  << c.measurements.specimens.size() << " specimens)\n";
+    std::cout << "explainGap: effects:";
     for (const auto& e : study.effects) std::cout << " " << e;
     std::cout << std::endl;
     if (app.dryRun()) return exitSuccess;
