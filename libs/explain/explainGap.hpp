@@ -4,7 +4,9 @@
 // by a score test (its sensitivity projected out of the baseline parameters'),
 // (4) confirm the best by a joint refit judged on held-out specimens and an
 // information criterion, and (5) write the augmented case, the gap tables, the
-// plots and one sentence. docs/explainGap.md gives the method in full.
+// plots and one sentence. A study of several test conditions (two loading rates, say)
+// stacks their features into one vector and fits them together. docs/explainGap.md gives
+// the method in full.
 #include <string>
 #include <vector>
 
