@@ -43,4 +43,22 @@ rm "$table"
 runCases -case "$study" -collect > /dev/null
 cmp "$table" "$work/table.1" || fail "-collect did not rebuild the same table"
 runCases -case "$study" -dry-run | grep -q "^0004  failed  x=3 y=10$" || fail "-dry-run listing"
+
+# Members share the cores: without OMP_NUM_THREADS each gets nproc / jobs threads (at least
+# one); a user's OMP_NUM_THREADS is passed on unchanged.
+threads="$work/threads"
+makeStudy "$threads" "1 2" "10"
+sed -i '2i echo "${OMP_NUM_THREADS:-unset}" > threads' "$threads/template/Allrun"
+(unset OMP_NUM_THREADS; runCases -case "$threads" > "$work/log.threads") || fail "threads study failed"
+expected=$(( $(nproc) / 2 )); [ "$expected" -ge 1 ] || expected=1
+for m in 0000 0001; do
+    [ "$(cat "$threads/members/$m/threads")" = "$expected" ] ||
+        fail "member $m ran with OMP_NUM_THREADS=$(cat "$threads/members/$m/threads"), expected $expected"
+done
+grep -q "each member runs with OMP_NUM_THREADS=$expected" "$work/log.threads" || fail "the thread share is not reported"
+rm -rf "$threads"
+makeStudy "$threads" "1 2" "10"
+sed -i '2i echo "${OMP_NUM_THREADS:-unset}" > threads' "$threads/template/Allrun"
+OMP_NUM_THREADS=3 runCases -case "$threads" > /dev/null || fail "threads study (OMP_NUM_THREADS=3) failed"
+[ "$(cat "$threads/members/0000/threads")" = 3 ] || fail "the user's OMP_NUM_THREADS was not passed on"
 echo "runCases table ok"

@@ -6,8 +6,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <iomanip>
@@ -131,6 +133,17 @@ private:
         for (const MemberDesign* member : queue_) prepareMember(study_, *member);
         std::cout << "runCases: " << study_.members.size() << " members, " << summary_.alreadyDone
                   << " already done, " << queue_.size() << " to run, " << jobs_ << " at a time" << std::endl;
+        // Members that each start as many OpenMP threads as there are cores, several at a
+        // time, oversubscribe the machine: a 60-cell disc ran about eight times slower with two
+        // members of two threads each on two cores. Unless the user chose (OMP_NUM_THREADS set),
+        // every member gets its share of the cores. The solvers give the same answer on any
+        // number of threads, so this changes the time, never the results.
+        if (!std::getenv("OMP_NUM_THREADS")) {
+            const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+            memberThreads_ = std::to_string(std::max(1u, cores / static_cast<unsigned>(std::max(1, jobs_))));
+            std::cout << "runCases: each member runs with OMP_NUM_THREADS=" << memberThreads_ << " (" << cores
+                      << " cores, " << jobs_ << " at a time; set OMP_NUM_THREADS to choose)" << std::endl;
+        }
     }
 
     void launchNext()
@@ -140,9 +153,11 @@ private:
         const fs::path directory = study_.memberDirectory(member.id);
         writeStatus(study_, member, "running");
         table_.forget(member.id);
-        const pid_t pid = stats::startProcess(
-            {"/bin/sh", "-c", study_.command}, directory, directory / "log.runCases",
-            {"RUNCASES_MEMBER=" + member.id, "RUNCASES_STUDY=" + fs::absolute(study_.directory).string()});
+        std::vector<std::string> environment = {"RUNCASES_MEMBER=" + member.id,
+                                                "RUNCASES_STUDY=" + fs::absolute(study_.directory).string()};
+        if (!memberThreads_.empty()) environment.push_back("OMP_NUM_THREADS=" + memberThreads_);
+        const pid_t pid = stats::startProcess({"/bin/sh", "-c", study_.command}, directory,
+                                              directory / "log.runCases", environment);
         running_[pid] = {&member, Clock::now()};
         std::cout << "started " << member.id << "  " << describeValues(study_, member) << std::endl;
     }
@@ -221,6 +236,7 @@ private:
 
     const Study& study_;
     int jobs_;
+    std::string memberThreads_;  // OMP_NUM_THREADS for the members; empty: inherited
     ResultsTable table_;
     std::deque<const MemberDesign*> queue_;
     std::map<pid_t, RunningMember> running_;
