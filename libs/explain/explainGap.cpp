@@ -56,7 +56,6 @@ struct Half {
 
 // The measured specimens of one test condition, split into the two halves.
 struct ConditionData {
-    std::string name;  // "" for a study of one condition
     Half cal, held;
     bool curves = false;
 };
@@ -140,11 +139,12 @@ private:
         return runs_.front().parameters[static_cast<std::size_t>(j)];
     }
     bool several() const { return cond_.size() > 1; }
+    const std::string& conditionName(std::size_t c) const { return s_.conditions[c].name; }
     static int row(const Observed& o) { return o.condition * nFeatures + o.feature; }
     // "peakForce", or "fast:peakForce" in a study of several conditions.
     std::string label(const Observed& o) const
     {
-        return (several() ? cond_[static_cast<std::size_t>(o.condition)].name + ":" : std::string()) +
+        return (several() ? conditionName(static_cast<std::size_t>(o.condition)) + ":" : std::string()) +
                featureName(o.feature);
     }
     // One point run in every condition.
@@ -225,7 +225,6 @@ void Analysis::splitMeasurements()
 {
     for (const TestCondition& condition : s_.conditions) {
         ConditionData data;
-        data.name = condition.name;
         const auto& specimens = condition.measurements.specimens;
         const std::size_t n = specimens.size();
         const std::size_t nHeld =
@@ -761,7 +760,8 @@ ExplainOutcome Analysis::execute()
                 }
                 const std::string where =
                     several() && separating >= 0
-                        ? " (condition " + cond_[static_cast<std::size_t>(separating / nFeatures)].name + ")"
+                        ? " (condition " + conditionName(static_cast<std::size_t>(separating / nFeatures)) +
+                              ")"
                         : "";
                 out.separatingMeasurement =
                     separating >= 0
@@ -851,7 +851,7 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     for (std::size_t c = 0; c < cond_.size(); ++c) {
         const Half& held = cond_[c].held;
         const PointRuns &before = baseline.runs[c], &withEffect = afterRuns[c];
-        const std::string prefix = several() ? cond_[c].name + ":" : "";
+        const std::string prefix = several() ? conditionName(c) + ":" : "";
         metrics.rows.push_back({prefix + "KS_failureLoads",
                                 format(stats::kolmogorovSmirnov(held.loads, peaks(before)), 3),
                                 format(stats::kolmogorovSmirnov(held.loads, peaks(withEffect)), 3)});
@@ -927,7 +927,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
     // with several conditions one per condition (augmentedCase/<condition>).
     if (effect) fs::remove_all(dir / "augmentedCase");
     for (std::size_t c = 0; effect && c < cond_.size(); ++c) {
-        const fs::path augmented = several() ? dir / "augmentedCase" / cond_[c].name : dir / "augmentedCase";
+        const fs::path augmented =
+            several() ? dir / "augmentedCase" / conditionName(c) : dir / "augmentedCase";
         fs::create_directories(augmented);
         for (const char* sub : {"system", "constant"})
             fs::copy(s_.conditions[c].targetCase / sub, augmented / sub, fs::copy_options::recursive);
@@ -1006,7 +1007,7 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
             p << stats::gnuplotDataBlock("c", c) << "set title "
               << stats::gnuplotString(
                      "Mean force-displacement curves, held-out specimens (aligned at contact onset)" +
-                     (several() ? ", condition " + cond_[k].name : std::string()))
+                     (several() ? ", condition " + conditionName(k) : std::string()))
               << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset "
                  "grid\n"
               << stats::legendBelowPlot(3)
@@ -1015,8 +1016,8 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
               << stats::gnuplotString(baselineTitle) << ", "
               << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
               << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
-            stats::renderPng(p.str(), dir / (several() ? "curves-" + cond_[k].name + ".png" : "curves.png"),
-                             900, 650);
+            stats::renderPng(
+                p.str(), dir / (several() ? "curves-" + conditionName(k) + ".png" : "curves.png"), 900, 650);
         }
     } catch (const UserError& e) {
         say(std::string("plots not drawn: ") + e.what());

@@ -32,8 +32,19 @@ fs::path existingCase(const Dictionary& dict, const fs::path& studyDir)
     return c;
 }
 
-calibration::SeedList readSeeds(const Dictionary& dict, const fs::path& caseDir, std::size_t minimum,
-                                const std::string& why)
+// Every case must hold `entry` in `file` (a study edits it in each of them).
+void requireCaseEntry(const std::string& where, const std::vector<fs::path>& caseDirs, const fs::path& file,
+                      const std::string& entry)
+{
+    for (const fs::path& caseDir : caseDirs) {
+        const fs::path path = caseDir / file;
+        if (!fs::is_regular_file(path) || !hasTextEntry(readFileText(path), entry, path.string()))
+            throw UserError(where + ": the case has no entry '" + entry + "' in '" + path.string() + "'");
+    }
+}
+
+calibration::SeedList readSeeds(const Dictionary& dict, const std::vector<fs::path>& caseDirs,
+                                std::size_t minimum, const std::string& why)
 {
     if (!dict.isDict("seeds"))
         throw UserError(dict.fileName() +
@@ -47,10 +58,7 @@ calibration::SeedList readSeeds(const Dictionary& dict, const fs::path& caseDir,
     if (seeds.values.size() < minimum)
         throw UserError(s.location("values").str() + ": " + std::to_string(seeds.values.size()) +
                         " seeds; at least " + std::to_string(minimum) + " are needed: " + why);
-    const fs::path file = caseDir / seeds.file;
-    if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), seeds.entry, file.string()))
-        throw UserError(s.location("entry").str() + ": the case has no entry '" + seeds.entry + "' in '" +
-                        file.string() + "'");
+    requireCaseEntry(s.location("entry").str(), caseDirs, seeds.file, seeds.entry);
     return seeds;
 }
 
@@ -158,10 +166,11 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
     s.simulations =
         dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
-    for (const TestCondition& c : s.conditions)
-        s.seeds = readSeeds(
-            dict, c.targetCase, 2,
-            "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
+    std::vector<fs::path> cases;
+    for (const TestCondition& c : s.conditions) cases.push_back(c.targetCase);
+    s.seeds =
+        readSeeds(dict, cases, 2,
+                  "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
 
     if (!dict.isDict("baseline"))
         throw UserError(
@@ -185,12 +194,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         b.where.low = range[0];
         b.where.high = range[1];
         b.relativeStep = d.getScalarOrDefault("relativeStep", 0.1, Bounds::open(0, 1));
-        for (const TestCondition& c : s.conditions) {
-            const fs::path file = c.targetCase / b.where.file;
-            if (!fs::is_regular_file(file) || !hasTextEntry(readFileText(file), b.where.entry, file.string()))
-                throw UserError(d.location("entry").str() + ": the case has no entry '" + b.where.entry +
-                                "' in '" + file.string() + "'");
-        }
+        requireCaseEntry(d.location("entry").str(), cases, b.where.file, b.where.entry);
         s.baseline.push_back(b);
     }
     if (dict.isDict("tied"))
@@ -273,7 +277,7 @@ TwinStudy readTwinStudy(const fs::path& studyDirectory)
     const Dictionary dict = Dictionary::readFile(s.dictionary);
     s.targetCase = existingCase(dict, studyDirectory);
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
-    s.seeds = readSeeds(dict, s.targetCase, 1, "one Voronoi seed per synthetic specimen");
+    s.seeds = readSeeds(dict, {s.targetCase}, 1, "one Voronoi seed per synthetic specimen");
     if (dict.isDict("effects")) {
         const Dictionary& effects = dict.subDict("effects");
         ModelEffects::read(effects);  // checks names and values now
