@@ -993,8 +993,14 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
         for (std::size_t k = 0; k < cond_.size(); ++k) {
             if (!cond_[k].curves) continue;
             const Half& held = cond_[k].held;
-            const double upTo = 1.6 * held.features.value[peakDisplacement];
-            const int n = 80;
+            // Far enough for every mean curve to show its peak: a model that fails at three
+            // times the measured displacement (the DEM against the FEM on an SPB rock) would
+            // otherwise be cut on its rising branch.
+            const double upTo =
+                1.3 * std::max({held.features.value[peakDisplacement],
+                                meanPeakDisplacement(baseline.runs[k].displacement, baseline.runs[k].force),
+                                meanPeakDisplacement(afterRuns[k].displacement, afterRuns[k].force)});
+            const int n = 120;
             const auto measured = meanCurve(held.displacement, held.force, upTo, n);
             const auto before = meanCurve(baseline.runs[k].displacement, baseline.runs[k].force, upTo, n);
             const auto withEffect = meanCurve(afterRuns[k].displacement, afterRuns[k].force, upTo, n);
@@ -1013,9 +1019,12 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
               << stats::legendBelowPlot(3)
               << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
               << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0) << " title "
-              << stats::gnuplotString(baselineTitle) << ", "
-              << "$c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
-              << stats::gnuplotString(effect ? "with " + out.effect : "(no effect kept)") << "\n";
+              << stats::gnuplotString(effect ? baselineTitle : baselineTitle + "; no effect kept");
+            // Without a kept effect the third curve would be the baseline's again, drawn over it.
+            if (effect)
+                p << ", $c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
+                  << stats::gnuplotString("with " + out.effect);
+            p << "\n";
             stats::renderPng(
                 p.str(), dir / (several() ? "curves-" + conditionName(k) + ".png" : "curves.png"), 900, 650);
         }

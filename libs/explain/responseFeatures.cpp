@@ -198,4 +198,23 @@ std::vector<double> meanCurve(const std::vector<std::vector<double>>& displaceme
     return mean;
 }
 
+double meanPeakDisplacement(const std::vector<std::vector<double>>& displacements,
+                            const std::vector<std::vector<double>>& forces)
+{
+    double sum = 0.0;
+    std::size_t used = 0;
+    for (std::size_t s = 0; s < displacements.size(); ++s) {
+        const auto& d = displacements[s];
+        const auto& f = forces[s];
+        if (f.empty()) continue;
+        const std::size_t ip = failurePeakIndex(f).value_or(
+            static_cast<std::size_t>(std::max_element(f.begin(), f.end()) - f.begin()));
+        const auto d0 = firstCrossing(d, f, onsetFraction * f[ip], ip);
+        if (!d0) continue;
+        sum += d[ip] - *d0;
+        ++used;
+    }
+    return used > 0 ? sum / static_cast<double>(used) : 0.0;
+}
+
 }  // namespace rockfrac::explain

@@ -71,4 +71,9 @@ FeatureSummary summariseFailureLoads(const std::vector<double>& failureLoads,
 std::vector<double> meanCurve(const std::vector<std::vector<double>>& displacements,
                               const std::vector<std::vector<double>>& forces, double upTo, int n);
 
+// The mean displacement from contact onset to the failure peak over a set's curves (0 when
+// none has an onset): how far a plot of the set's mean curve has to reach.
+double meanPeakDisplacement(const std::vector<std::vector<double>>& displacements,
+                            const std::vector<std::vector<double>>& forces);
+
 }  // namespace rockfrac::explain

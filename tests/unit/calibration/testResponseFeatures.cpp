@@ -92,3 +92,19 @@ TEST_CASE("the median summary is not moved by one odd specimen", "[explain][feat
     const FeatureSummary clean = summariseFailureLoads(loads);
     CHECK(std::fabs(clean.value[peakForce] - median.value[peakForce]) < 0.2 * clean.value[peakForceSpread]);
 }
+
+TEST_CASE("the mean peak displacement of a set is measured from each curve's contact onset",
+          "[explain][features]")
+{
+    // Two discs: a seated one (onset at 0) and one with a 50 um toe of zero force before
+    // contact; peaks 200 and 300 um after their onsets (less the 2 % onset offset).
+    std::vector<double> d1, f1, d2, f2;
+    curve({{0.0, 0.0}, {200e-6, 10e3}, {210e-6, 4e3}}, d1, f1);
+    curve({{0.0, 0.0}, {50e-6, 0.0}, {350e-6, 8e3}, {360e-6, 1e3}}, d2, f2);
+    const double expected = 0.5 * (200e-6 + 300e-6) * (1 - onsetFraction);
+    CHECK(meanPeakDisplacement({d1, d2}, {f1, f2}) == Approx(expected).epsilon(1e-6));
+    CHECK(meanPeakDisplacement({}, {}) == 0.0);
+    // A mean curve drawn that far from the onset reaches the peak.
+    const auto mean = meanCurve({d1}, {f1}, 200e-6 * (1 - onsetFraction), 2);
+    CHECK(mean.back() == Approx(10e3).epsilon(1e-6));
+}
