@@ -11,7 +11,9 @@
 #        [plate speed m/s, default the tutorial's] [rocks, default all: "rock1 rock3"]
 #        [massScalingTimeStep s, default the tutorial's]
 #        [plates/crushingPressure Pa, default the tutorial's; 0 = off]
-#        [endTime s, default the tutorial's].
+#        [endTime s, default the tutorial's]
+#        [shape seed offset, default 0: added to each rock's meshRock seed, for an ensemble
+#         of generated shapes of the same volume and Zingg ratios].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
@@ -19,6 +21,7 @@ speed="${4:-}"
 massStep="${6:-}"
 crushing="${7:-}"
 endTime="${8:-}"
+shapeOffset="${9:-0}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
@@ -31,6 +34,7 @@ for rock in $rocks; do
     cp -r template "$c"
     for key in volume elongation flatness seed; do
         value=$(caseDict -case . rocks -entry "$rock/$key" -value)
+        [ "$key" != seed ] || value=$((value + shapeOffset))
         caseDict -case "$c" system/meshRockDict -entry "generated/$key" -set "$value" > /dev/null
     done
     [ -z "$h" ] || caseDict -case "$c" system/feMeshDict -entry elementSize -set "$h" > /dev/null
