@@ -46,12 +46,18 @@ RF_HD inline void elementInternalForces(const SymTensor& s, double volume, const
     }
 }
 
+struct NoElementEroded {
+    bool operator()(std::size_t) const { return false; }
+};
+
 // Runs stressUpdate(e, strain) -> SymTensor over all elements (OpenMP), stores the
 // stress (6 per element) and internal forces (12 per element). Returns the lowest
 // index of an element that is inverted (det(I + H) <= 0) or not finite, or -1.
-template <class StressUpdate>
+// An element for which eroded(e) is true has left the model: zero stress and forces,
+// no stress update and no inversion check (its nodes may pass through each other).
+template <class StressUpdate, class Eroded = NoElementEroded>
 long long elementLoop(const ElementGeometry& geometry, const double* displacements, double* stresses,
-                      double* elementForces, StressUpdate&& stressUpdate)
+                      double* elementForces, StressUpdate&& stressUpdate, Eroded eroded = {})
 {
     const long long numElements = static_cast<long long>(geometry.numElements());
     const int* nodeIds = geometry.nodeIds.data();
@@ -60,6 +66,11 @@ long long elementLoop(const ElementGeometry& geometry, const double* displacemen
     long long firstBad = LLONG_MAX;
 #pragma omp parallel for schedule(static) reduction(min : firstBad)
     for (long long e = 0; e < numElements; ++e) {
+        if (eroded(static_cast<std::size_t>(e))) {
+            for (int k = 0; k < 6; ++k) stresses[6 * e + k] = 0.0;
+            for (int k = 0; k < 12; ++k) elementForces[12 * e + k] = 0.0;
+            continue;
+        }
         Mat3 h = displacementGradient(nodeIds + 4 * e, gradients + 12 * e, displacements);
         const SymTensor strain = symmetricPart(h);
         for (int i = 0; i < 3; ++i) h.m[i][i] += 1.0;  // deformation gradient F = I + H

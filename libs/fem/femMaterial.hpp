@@ -48,6 +48,11 @@ struct MaterialParameters {
     std::uint64_t seed = 0;         // case seed for the per-element thresholds
     // Fraction of the shear stiffness kept in the planes containing an open crack's normal.
     double crackShearRetention = 0.0;
+    // Element erosion: an element whose number of failed directions reaches this value
+    // stops contributing (zero stress from then on, never checked for inversion), as in
+    // the paper's FEM ("an element stops contributing once the damage variable reaches
+    // one"). 0 = never (cracked elements carry compression across closed cracks).
+    int erodeAfterCracks = 0;
 };
 
 // A per-element state array the caller can write and read back for restarts.

@@ -41,6 +41,8 @@ KstDfhMaterial::KstDfhMaterial(const MaterialParameters& parameters) : FemMateri
     constants_.crackShearRetention = parameters.crackShearRetention;
     if (!(parameters.crackShearRetention >= 0.0 && parameters.crackShearRetention <= 1.0))
         throw UserError("kstDfh: crackShearRetention must lie in [0, 1]");
+    if (parameters.erodeAfterCracks < 0 || parameters.erodeAfterCracks > 3)
+        throw UserError("kstDfh: erodeAfterCracks must be 0 (no erosion), 1, 2 or 3");
     for (const auto& [strain, pressure] : parameters.compactionCurve) {
         compactionStrains_.push_back(strain);
         compactionPressures_.push_back(pressure);
@@ -115,20 +117,25 @@ long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, 
                                                double* stresses, double* elementForces)
 {
     const KstDfhConstants c = constants_;
-    return elementLoop(geometry, displacements, stresses, elementForces,
-                       [this, &c](std::size_t e, const SymTensor& strain) {
-                           // Only what the update can change is written back (the
-                           // thresholds never change; the frame only when a crack forms).
-                           // An elastic step leaves the plastic history as it was: not
-                           // writing it back saves 8 stores per element and step.
-                           KstDfhPointState state = pointState(e);
-                           const int cracksBefore = state.crackCount;
-                           bool historyChanged = false;
-                           const SymTensor stress = kstDfh::updateStress(c, state, strain, &historyChanged);
-                           if (historyChanged) storePlasticHistory(e, state);
-                           if (state.crackCount != cracksBefore) storeCracks(e, state);
-                           return stress;
-                       });
+    const double erodeAt = parameters_.erodeAfterCracks > 0 ? parameters_.erodeAfterCracks : 4.0;
+    const double* crackCount = crackCount_.data();
+    return elementLoop(
+        geometry, displacements, stresses, elementForces,
+        [this, &c, erodeAt](std::size_t e, const SymTensor& strain) {
+            // Only what the update can change is written back (the
+            // thresholds never change; the frame only when a crack forms).
+            // An elastic step leaves the plastic history as it was: not
+            // writing it back saves 8 stores per element and step.
+            KstDfhPointState state = pointState(e);
+            const int cracksBefore = state.crackCount;
+            bool historyChanged = false;
+            const SymTensor stress = kstDfh::updateStress(c, state, strain, &historyChanged);
+            if (historyChanged) storePlasticHistory(e, state);
+            if (state.crackCount != cracksBefore) storeCracks(e, state);
+            // The crack that erodes the element takes its stress at once.
+            return state.crackCount >= erodeAt ? SymTensor{} : stress;
+        },
+        [crackCount, erodeAt](std::size_t e) { return crackCount[e] >= erodeAt; });
 }
 
 std::vector<StateField> KstDfhMaterial::stateFields()

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
@@ -46,6 +47,14 @@ void readDfh(const Dictionary& dfh, MaterialParameters& m)
     m.referenceVolume = dfh.getScalar("referenceVolume", Bounds::positive(), &volume);
     m.seed = dfh.get<std::uint64_t>("seed");
     m.crackShearRetention = dfh.getScalarOrDefault("crackShearRetention", 0.0, Bounds::closed(0, 1));
+    const double erode = dfh.getScalarOrDefault("erodeAfterCracks", 0.0, Bounds::closed(0, 3));
+    if (erode != std::floor(erode)) {
+        std::ostringstream message;
+        message << dfh.fileName() << ": dfh/erodeAfterCracks is " << erode
+                << "; give the number of failed directions that erode an element: 0 (never), 1, 2 or 3";
+        throw UserError(message.str());
+    }
+    m.erodeAfterCracks = static_cast<int>(erode);
 }
 
 }  // namespace

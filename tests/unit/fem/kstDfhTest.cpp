@@ -2,7 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include "core/error.hpp"
+#include "fem/elementGeometry.hpp"
 #include "fem/kstDfhMaterial.hpp"
+#include "femTestSupport.hpp"
 
 using namespace rockfrac;
 using namespace rockfrac::fem;
@@ -127,6 +129,46 @@ TEST_CASE("DFH: an open crack keeps only the retained fraction of its shear stif
     strain.xx = -1e-4;                           // closed crack: full shear
     s = kstDfh::updateStress(c, state, strain);
     CHECK(s.xy == Approx(2 * mu * 1e-5));
+}
+
+TEST_CASE("DFH erosion: an element leaves the model once its set number of directions has failed",
+          "[fem][dfh]")
+{
+    // One regular tet stretched along x past its first threshold, then pressed and finally
+    // inverted. Without erosion the cracked element carries the compression; with
+    // erodeAfterCracks 1 it carries nothing from the crack on and is never reported inverted.
+    const TetMesh mesh = test::regularTet(1e-2);
+    const ElementGeometry geometry = makeElementGeometry(mesh);
+    auto run = [&](int erodeAfterCracks, double stretch, std::vector<double>& stress) {
+        MaterialParameters p;
+        p.referenceVolume = 1e-9;
+        p.erodeAfterCracks = erodeAfterCracks;
+        KstDfhMaterial material(p);
+        material.initialise(geometry);
+        KstDfhPointState state = material.pointState(0);
+        state.failureStress[0] = 10e6, state.failureStress[1] = 20e6, state.failureStress[2] = 30e6;
+        material.setPointState(0, state);
+        std::vector<double> u(12, 0.0), forces(12, 0.0);
+        stress.assign(6, 0.0);
+        long long bad = -1;
+        for (double strain : {2.0 * 10e6 / p.youngsModulus, stretch}) {
+            for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;  // u_x = eps x
+            bad = material.computeElementForces(geometry, u.data(), stress.data(), forces.data());
+        }
+        CHECK(material.pointState(0).crackCount == 1);
+        return bad;
+    };
+    std::vector<double> stress;
+    CHECK(run(0, -1e-4, stress) == -1);
+    CHECK(stress[0] < -1e6);  // the closed crack carries the compression
+    CHECK(run(1, -1e-4, stress) == -1);
+    for (double component : stress) CHECK(component == 0.0);
+    CHECK(run(0, -2.0, stress) == 0);   // inverted (x -> -x): reported
+    CHECK(run(1, -2.0, stress) == -1);  // eroded: no longer part of the model
+    for (double component : stress) CHECK(component == 0.0);
+    MaterialParameters wrong;
+    wrong.erodeAfterCracks = 4;
+    CHECK_THROWS_WITH(KstDfhMaterial(wrong), Catch::Contains("erodeAfterCracks"));
 }
 
 TEST_CASE("unknown material names list the known ones", "[fem]")
