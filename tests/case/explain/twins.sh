@@ -29,11 +29,31 @@ cut -f1-11 bdt/postProcessing/plateForce/0/plateForce.dat > a.dat
 cut -f1-11 neutral/postProcessing/plateForce/0/plateForce.dat > b.dat
 cmp -s a.dat b.dat || fail "constant/modelEffects with every effect neutral changed plateForce.dat"
 echo "neutral effects: plateForce.dat identical to the baseline's"
-rm -rf neutral bdt/[0-9]* bdt/postProcessing bdt/VTK bdt/constant/voronoiMesh
+# Every effect switched on at once: each effect's code runs in one simulation (at the small
+# size, under the sanitizers, the scenarios below screen two effects only).
+cp -r neutral allOn
+rm -rf allOn/[0-9]* allOn/postProcessing allOn/VTK
+cat > allOn/constant/modelEffects <<'DICT'
+FoamFile { format ascii; class dictionary; object modelEffects; }
+contactCrumbling    { strengthLoss 0.5; depth 8e-3; }
+machineCompliance   { compliance 3e-9; }
+seatingOffset       { depth 0.03e-3; closureForce 1500; }
+bondStrengthScatter { inverseModulus 0.4; seed 3; }
+rateDamping         { betaFactor 3; }
+plateFriction       { frictionFactor 0.5; }
+DICT
+(cd allOn && bondedDemFoam > log.bondedDemFoam 2>&1) || fail "allOn: the run with every effect on failed: $(tail -1 allOn/log.bondedDemFoam)"
+peakOf() { awk -F'\t' '!/^#/ { if ($3 > f) f = $3 } END { printf "%.6g", f }' "$1/postProcessing/plateForce/0/plateForce.dat"; }
+read -r basePeak allPeak < <(echo "$(peakOf bdt) $(peakOf allOn)")
+awk -v a="$basePeak" -v b="$allPeak" 'BEGIN { exit !(b > 0 && (b - a) * (b - a) > 1e-6 * a * a) }' ||
+    fail "allOn: every effect on left the peak force at $allPeak N (baseline $basePeak N)"
+echo "every effect on: peak force $allPeak N against the baseline's $basePeak N"
+rm -rf neutral allOn bdt/[0-9]* bdt/postProcessing bdt/VTK bdt/constant/voronoiMesh
 
 source "$(dirname "$0")/scenarioFunctions"
 
 if [ "$caseSize" = small ]; then  # the fixed-baseline fit and the features option
+    export EFFECTS="seatingOffset machineCompliance"  # the two in play (all of them: allOn above)
     FIXED_BASELINE=1 scenario fixedBaseline "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset
     scenario ambiguous  "seatingOffset { depth 0.15e-3; closureForce 1500; }" indistinguishable \
         "seatingOffset machineCompliance" "peakForce peakForceSpread peakDisplacement"
