@@ -10,8 +10,6 @@ export OMP_NUM_THREADS=1
 copyTutorial tutorials/explainGap "$work/tutorial"
 cd "$work/tutorial"
 source "$(dirname "$0")/scenarioFunctions"
-effects="contactCrumbling machineCompliance plateFriction"
-if [ "$caseSize" = small ]; then effects="contactCrumbling plateFriction"; fi  # two at the small size
-MODEL=spb EFFECTS="$effects" \
+MODEL=spb EFFECTS=$(bySize "contactCrumbling machineCompliance plateFriction" "contactCrumbling plateFriction") \
     scenario friction "plateFriction { frictionFactor 0.05; }" explained plateFriction
 echo "PASS"

@@ -16,6 +16,6 @@ source "$(dirname "$0")/scenarioFunctions"
 makeFastCase
 # At the small size the screen holds the rate effect and one other (every effect's code runs
 # in case.explain.twins' allOn simulation).
-if [ "$caseSize" = small ]; then export EFFECTS="rateDamping seatingOffset"; fi
-rateScenario rate "rateDamping { betaFactor 10; }" explained rateDamping
+EFFECTS=$(bySize "" "rateDamping seatingOffset") \
+    rateScenario rate "rateDamping { betaFactor 10; }" explained rateDamping
 echo "PASS"

@@ -44,7 +44,8 @@ plateFriction       { frictionFactor 0.5; }
 DICT
 (cd allOn && bondedDemFoam > log.bondedDemFoam 2>&1) || fail "allOn: the run with every effect on failed: $(tail -1 allOn/log.bondedDemFoam)"
 peakOf() { awk -F'\t' '!/^#/ { if ($3 > f) f = $3 } END { printf "%.6g", f }' "$1/postProcessing/plateForce/0/plateForce.dat"; }
-read -r basePeak allPeak < <(echo "$(peakOf bdt) $(peakOf allOn)")
+basePeak=$(peakOf bdt)
+allPeak=$(peakOf allOn)
 awk -v a="$basePeak" -v b="$allPeak" 'BEGIN { exit !(b > 0 && (b - a) * (b - a) > 1e-6 * a * a) }' ||
     fail "allOn: every effect on left the peak force at $allPeak N (baseline $basePeak N)"
 echo "every effect on: peak force $allPeak N against the baseline's $basePeak N"
