@@ -48,6 +48,10 @@ struct MaterialParameters {
     std::uint64_t seed = 0;         // case seed for the per-element thresholds
     // Fraction of the shear stiffness kept in the planes containing an open crack's normal.
     double crackShearRetention = 0.0;
+    // Crack band: fracture energy G_F of a crack [N/m]; 0 = complete failure at the
+    // threshold (the paper's DFH). With G_F > 0 a crack's normal stress softens linearly
+    // over an opening set by G_F and the element's width across the crack.
+    double fractureEnergy = 0.0;
     // Element erosion: an element whose number of failed directions reaches this value
     // stops contributing (zero stress from then on, never checked for inversion), as in
     // the paper's FEM ("an element stops contributing once the damage variable reaches

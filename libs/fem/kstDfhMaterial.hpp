@@ -19,10 +19,8 @@ public:
                                    double* stresses, double* elementForces) override;
     std::vector<StateField> stateFields() override;
 
-    double damage(std::size_t element, int direction) const override
-    {
-        return crackCount_[element] > direction ? 1.0 : 0.0;
-    }
+    // 1 for a failed direction; with a crack band, the fraction of its softening opened.
+    double damage(std::size_t element, int direction) const override;
     double equivalentPlasticStrain(std::size_t element) const override
     {
         return equivalentPlasticStrain_[element];
@@ -38,6 +36,7 @@ public:
 private:
     void storePlasticHistory(std::size_t element, const KstDfhPointState& state);
     void storeCracks(std::size_t element, const KstDfhPointState& state);
+    void storeCrackOpenings(std::size_t element, const KstDfhPointState& state);
 
     KstDfhConstants constants_;
     std::vector<double> compactionStrains_, compactionPressures_;
@@ -47,6 +46,8 @@ private:
     std::vector<double> crackCount_;               // 1 (0..3, stored as double for restart files)
     std::vector<double> crackFrame_;               // 9 (rows n1, n2, n3)
     std::vector<double> failureStress_;            // 3 (ascending)
+    std::vector<double> crackOpening_;             // 3, crack band only: largest opening strain
+    std::vector<double> softeningStrain_;          // 3, crack band only: opening strain at t = 0
 };
 
 }  // namespace rockfrac::fem

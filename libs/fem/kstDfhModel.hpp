@@ -13,6 +13,10 @@
 //     tensile cutoff return to the apex P = P_cut;
 //  4. DFH: if the next threshold is exceeded, a new crack direction is frozen and
 //     the update is redone from step 1 with it (up to three cracks per element).
+// With a fracture energy G_F > 0 (crack band, optional) an open crack is not free of
+// stress at once: its normal stress softens linearly with the opening over a strain
+// set by G_F and the element's width across the crack (crackBandWidth below), so an
+// element dissipates G_F per unit crack area whatever its size.
 // All functions are RF_HD (no exceptions, no heap) so a device backend can reuse them.
 #include "fem/symTensor.hpp"
 
@@ -25,6 +29,9 @@ struct KstDfhConstants {
     double pressureCutoff = 0.0;          // most tensile admissible pressure (<= 0)
     bool damageEnabled = true;
     double crackShearRetention = 0.0;
+    // Crack band (Bazant and Oh 1983): fracture energy G_F [N/m] of each crack; 0 = the
+    // crack is complete (no cohesive stress) as soon as it forms, the paper's DFH.
+    double fractureEnergy = 0.0;
     // Compaction curve (compressive volumetric strain, pressure); count 0 = off.
     const double* compactionStrains = nullptr;
     const double* compactionPressures = nullptr;
@@ -45,6 +52,13 @@ struct KstDfhPointState {
     int crackCount = 0;                   // failed directions: rows 0..crackCount-1 of crackFrame
     Mat3 crackFrame = Mat3::identity();   // orthonormal rows n1, n2, n3
     double failureStress[3] = {0, 0, 0};  // ascending DFH thresholds
+    // Crack band (only with G_F > 0): the largest opening strain each crack has reached
+    // and the opening strain at which it carries no normal stress any more.
+    double crackOpening[3] = {0, 0, 0};
+    double softeningStrain[3] = {0, 0, 0};
+    // Not history: the element's shape-function gradients dN_a/dx (12, node-major), for
+    // the band width of a crack that forms; nullptr = no geometry (steepest softening).
+    const double* elementGradients = nullptr;
 };
 
 // Upper root of a0 + a1 P + a2 P^2 = 0 (where the KST surface closes on the tensile
@@ -87,6 +101,142 @@ RF_HD inline void updateCompaction(const KstDfhConstants& c, const SymTensor& st
     }
 }
 
+// ---- Crack band (G_F > 0) -----------------------------------------------------------
+
+// Width of the band over which a crack of normal n is smeared in a linear tet (Oliver
+// 1989; Govindjee, Kay and Simo 1995): h = 2 / sum_a |grad N_a . n|, the extent of the
+// element's opening strain field along n (a bar of length L gives L).
+RF_HD inline double crackBandWidth(const double* gradients, const Vec3& n)
+{
+    double sum = 0.0;
+    for (int a = 0; a < 4; ++a)
+        sum += std::abs(gradients[3 * a] * n.x + gradients[3 * a + 1] * n.y + gradients[3 * a + 2] * n.z);
+    return sum > 0.0 ? 2.0 / sum : 0.0;
+}
+
+// Opening strain at which crack k carries no normal stress: the linear softening
+// t = sigma_F (1 - w / w_c) dissipates sigma_F w_c / 2 per unit volume, G_F per unit crack
+// area over the band width h when w_c = 2 G_F / (sigma_F h). Never shorter than
+// 2 sigma_F / E: the softening stays at most half as steep as the elastic loading (no
+// snap-back within an element); an element wider than E G_F / sigma_F^2 then dissipates
+// more than G_F, which docs/theory-fem.md states.
+RF_HD inline double softeningStrainOf(const KstDfhConstants& c, const KstDfhPointState& s, int k)
+{
+    const double mu = c.elastic.shearModulus, lambda = c.elastic.lambda;
+    const double youngsModulus = mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
+    const double strength = s.failureStress[k];
+    const double steepest = 2.0 * strength / youngsModulus;
+    if (!s.elementGradients) return steepest;
+    const Vec3 n{s.crackFrame.m[k][0], s.crackFrame.m[k][1], s.crackFrame.m[k][2]};
+    const double h = crackBandWidth(s.elementGradients, n);
+    const double strain = h > 0.0 ? 2.0 * c.fractureEnergy / (strength * h) : steepest;
+    return strain > steepest ? strain : steepest;
+}
+
+// Fraction of crack k's strength left after an opening strain w: 1 - max(kappa, w) / w_c,
+// at least 0 (the crack's damage is one minus this).
+RF_HD inline double remainingStrength(const KstDfhPointState& s, int k, double opening)
+{
+    const double kappa = opening > s.crackOpening[k] ? opening : s.crackOpening[k];
+    const double left = 1.0 - kappa / s.softeningStrain[k];
+    return left > 0.0 ? left : 0.0;
+}
+
+// Step 2 with a crack band: the open cracks i carry a cohesive normal stress t_i(w_i) of
+// their opening strain w_i. Each crack follows one linear branch t = a - b w at a time:
+//   closed     w = 0 (full stiffness; compression carried, as without G_F),
+//   softening  t = sigma_F (1 - w / w_c) while kappa <= w <= w_c (kappa: largest w so far),
+//   reloading  t = sigma_F (1 - kappa / w_c) w / kappa for 0 <= w <= kappa (secant unloading),
+//   free       t = 0 beyond w_c (or once kappa >= w_c: the crack of the paper's DFH).
+// On a branch the normal-stress conditions lambda (tr e - sum w) + 2 mu (e_i - w_i) = a_i - b_i w_i
+// are linear, (2 mu - b_i) w_i + lambda sum w = lambda tr e + 2 mu e_i - a_i, and are solved
+// in closed form (diagonal plus rank one, Sherman-Morrison); an active-set loop moves each
+// crack to the branch its solution lies on. Shear components coupling to an open crack keep
+// the crack's remaining strength fraction of their stiffness (at least crackShearRetention).
+RF_HD inline SymTensor crackBandElasticStress(const KstDfhConstants& c, const KstDfhPointState& s,
+                                              const SymTensor& elasticStrain, double opening[3])
+{
+    enum Branch { closed, softening, reloading, free };
+    const double lambda = c.elastic.lambda, twoMu = 2.0 * c.elastic.shearModulus;
+    const SymTensor e = toFrame(elasticStrain, s.crackFrame);
+    const double strainNormal[3] = {e.xx, e.yy, e.zz};
+    const double trialTrace = trace(e);
+    int branch[3] = {closed, closed, closed};
+    for (int i = 0; i < s.crackCount; ++i) {
+        const bool spent = s.crackOpening[i] >= s.softeningStrain[i];
+        if (s.crackOpening[i] > 0.0) branch[i] = spent ? free : reloading;
+    }
+    double sumOpening = 0.0;
+    for (int iteration = 0; iteration < 16; ++iteration) {
+        double d[3] = {1, 1, 1}, r[3] = {0, 0, 0}, sumInverse = 0.0, sumRatio = 0.0;
+        for (int i = 0; i < s.crackCount; ++i) {
+            if (branch[i] == closed) continue;
+            const double strength = s.failureStress[i], wc = s.softeningStrain[i], kappa = s.crackOpening[i];
+            double a = 0.0, b = 0.0;
+            if (branch[i] == softening) a = strength, b = strength / wc;
+            if (branch[i] == reloading) b = -strength * (1.0 - kappa / wc) / kappa;
+            d[i] = twoMu - b;
+            r[i] = lambda * trialTrace + twoMu * strainNormal[i] - a;
+            sumInverse += 1.0 / d[i];
+            sumRatio += r[i] / d[i];
+        }
+        const double lambdaSum = lambda * sumRatio / (1.0 + lambda * sumInverse);  // lambda sum w
+        sumOpening = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            opening[i] = branch[i] == closed ? 0.0 : (r[i] - lambdaSum) / d[i];
+            sumOpening += opening[i];
+        }
+        bool changed = false;
+        for (int i = 0; i < s.crackCount; ++i) {
+            const double strength = s.failureStress[i], wc = s.softeningStrain[i], kappa = s.crackOpening[i];
+            const double w = opening[i];
+            const int was = branch[i];
+            if (was == closed) {
+                const double normalStress = lambda * (trialTrace - sumOpening) + twoMu * strainNormal[i];
+                // A crack opens against what it still holds at w = 0: its strength while it
+                // has never opened, nothing once it has.
+                if (kappa >= wc)
+                    branch[i] = normalStress > 0.0 ? free : closed;
+                else if (kappa > 0.0)
+                    branch[i] = normalStress > 0.0 ? reloading : closed;
+                else
+                    branch[i] = normalStress > strength ? softening : closed;
+            } else if (w < 0.0) {
+                branch[i] = closed;
+            } else if (was == reloading && w > kappa) {
+                branch[i] = softening;
+            } else if (was == softening && w > wc) {
+                branch[i] = free;
+            } else if (was == softening && w < kappa) {
+                branch[i] = kappa > 0.0 ? reloading : closed;
+            } else if (was == free && w < wc && kappa < wc) {
+                branch[i] = w > kappa ? softening : reloading;
+            }
+            changed = changed || branch[i] != was;
+        }
+        if (!changed) break;
+    }
+    for (int i = 0; i < 3; ++i)
+        if (opening[i] < 0.0) opening[i] = 0.0;
+    const double volumetric = lambda * (trialTrace - sumOpening);
+    double keep[3] = {1.0, 1.0, 1.0};  // shear stiffness kept by each crack
+    for (int i = 0; i < s.crackCount; ++i)
+        if (opening[i] > 0.0) {
+            const double left = remainingStrength(s, i, opening[i]);
+            keep[i] = left > c.crackShearRetention ? left : c.crackShearRetention;
+        }
+    const double r01 = keep[0] < keep[1] ? keep[0] : keep[1];
+    const double r12 = keep[1] < keep[2] ? keep[1] : keep[2];
+    const double r20 = keep[2] < keep[0] ? keep[2] : keep[0];
+    const SymTensor crackFrameStress = {volumetric + twoMu * (strainNormal[0] - opening[0]),
+                                        volumetric + twoMu * (strainNormal[1] - opening[1]),
+                                        volumetric + twoMu * (strainNormal[2] - opening[2]),
+                                        r01 * twoMu * e.xy,
+                                        r12 * twoMu * e.yz,
+                                        r20 * twoMu * e.zx};
+    return fromFrame(crackFrameStress, s.crackFrame);
+}
+
 // Step 2: elastic stress with the frozen cracks. In the crack frame, the opening
 // strains e_i >= 0 of the open cracks make their normal stresses vanish:
 //   (2 mu I + lambda 1 1^T) e = b,  b_i = trial normal stress (Sherman-Morrison solve),
@@ -94,9 +244,11 @@ RF_HD inline void updateCompaction(const KstDfhConstants& c, const SymTensor& st
 // closes again if its opening strain would be negative). Shear components coupling
 // to an open crack are multiplied by the retention factor.
 RF_HD inline SymTensor crackedElasticStress(const KstDfhConstants& c, const KstDfhPointState& s,
-                                            const SymTensor& elasticStrain)
+                                            const SymTensor& elasticStrain, double* crackOpening = nullptr)
 {
     if (s.crackCount == 0) return c.elastic.stress(elasticStrain);
+    if (c.fractureEnergy > 0.0 && crackOpening)
+        return crackBandElasticStress(c, s, elasticStrain, crackOpening);
     const double lambda = c.elastic.lambda, twoMu = 2.0 * c.elastic.shearModulus;
     const SymTensor e = toFrame(elasticStrain, s.crackFrame);
     const double strainNormal[3] = {e.xx, e.yy, e.zz};
@@ -214,11 +366,12 @@ RF_HD inline SymTensor updateStress(const KstDfhConstants& c, KstDfhPointState& 
     const double startCompaction = s.compactionStrain;
     SymTensor stress;
     bool changed = false;
+    double opening[3] = {0, 0, 0};  // crack band: the opening strains of this update
     for (int attempt = 0; attempt < 4; ++attempt) {
         double compaction = startCompaction;
         updateCompaction(c, strain - startPlasticStrain, compaction);
         const SymTensor elasticStrain = strain - startPlasticStrain + SymTensor::isotropic(compaction / 3.0);
-        const SymTensor trial = crackedElasticStress(c, s, elasticStrain);
+        const SymTensor trial = crackedElasticStress(c, s, elasticStrain, opening);
         bool yielded = false;
         stress = kstReturn(c, trial, yielded);
         s.compactionStrain = compaction;
@@ -233,7 +386,17 @@ RF_HD inline SymTensor updateStress(const KstDfhConstants& c, KstDfhPointState& 
                     std::sqrt(2.0 / 3.0 * doubleContraction(plasticIncrement, plasticIncrement));
             break;
         }
+        // A new crack: its softening length from its normal and the element's width across it.
+        if (c.fractureEnergy > 0.0) {
+            const int k = s.crackCount - 1;
+            s.softeningStrain[k] = softeningStrainOf(c, s, k);
+            s.crackOpening[k] = opening[k] = 0.0;
+        }
     }
+    // The opening reached is history (the secant unloading of a softened crack).
+    if (c.fractureEnergy > 0.0)
+        for (int i = 0; i < s.crackCount; ++i)
+            if (opening[i] > s.crackOpening[i]) s.crackOpening[i] = opening[i];
     if (historyChanged) *historyChanged = changed;
     return stress;
 }

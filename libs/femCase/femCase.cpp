@@ -47,6 +47,8 @@ void readDfh(const Dictionary& dfh, MaterialParameters& m)
     m.referenceVolume = dfh.getScalar("referenceVolume", Bounds::positive(), &volume);
     m.seed = dfh.get<std::uint64_t>("seed");
     m.crackShearRetention = dfh.getScalarOrDefault("crackShearRetention", 0.0, Bounds::closed(0, 1));
+    static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
+    m.fractureEnergy = dfh.getScalarOrDefault("fractureEnergy", 0.0, Bounds::nonNegative(), &energyPerArea);
     const double erode = dfh.getScalarOrDefault("erodeAfterCracks", 0.0, Bounds::closed(0, 3));
     if (erode != std::floor(erode)) {
         std::ostringstream message;

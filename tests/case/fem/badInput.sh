@@ -15,6 +15,10 @@ v=$(variant weibull); caseDict -case "$v" constant/rockProperties -entry dfh/wei
 expectUserError "weibullModulus" feFractureSolver -case "$v"
 v=$(variant erosion); caseDict -case "$v" constant/rockProperties -entry dfh/erodeAfterCracks -add 1.5 > /dev/null
 expectUserError "erodeAfterCracks" feFractureSolver -case "$v"
+v=$(variant fractureEnergy); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -add "[N/m] -30" > /dev/null
+expectUserError "fractureEnergy" feFractureSolver -case "$v"
+v=$(variant fractureEnergyUnits); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -add "[Pa] 30" > /dev/null
+expectUserError "fractureEnergy" feFractureSolver -case "$v"
 v=$(variant gap); caseDict -case "$v" constant/loading -entry plates/startGap -set 1 > /dev/null
 expectUserError "never touches the specimen" feFractureSolver -case "$v"
 v=$(variant units); caseDict -case "$v" constant/rockProperties -entry rock/E -set "[m] 77e9" > /dev/null
@@ -29,7 +33,7 @@ awk '/^\$Elements/ { inside = 1; print; getline; print; next }
      { print }' "$work/case/constant/feMesh/specimen.msh" > "$v/constant/feMesh/specimen.msh"
 cmp -s "$v/constant/feMesh/specimen.msh" "$work/case/constant/feMesh/specimen.msh" && fail "could not invert an element"
 expectUserError "inverted" feFractureSolver -case "$v"
-for d in material weibull erosion gap units inverted; do
+for d in material weibull erosion fractureEnergy fractureEnergyUnits gap units inverted; do
     [ ! -d "$work/$d/0" ] && [ ! -e "$work/$d/VTK/fem_0.vtu" ] || fail "$d: a refused run wrote output"
 done
 echo "bad input ok"

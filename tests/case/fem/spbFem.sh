@@ -13,7 +13,9 @@
 #        [plates/crushingPressure Pa, default the tutorial's; 0 = off]
 #        [endTime s, default the tutorial's]
 #        [shape seed offset, default 0: added to each rock's meshRock seed, for an ensemble
-#         of generated shapes of the same volume and Zingg ratios].
+#         of generated shapes of the same volume and Zingg ratios]
+#        [dfh/fractureEnergy N/m, default the tutorial's (none): the crack band]
+#        [dfh/weibullStress Pa, default the tutorial's].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
@@ -22,6 +24,8 @@ massStep="${6:-}"
 crushing="${7:-}"
 endTime="${8:-}"
 shapeOffset="${9:-0}"
+fractureEnergy="${10:-}"
+weibullStress="${11:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
@@ -45,6 +49,8 @@ for rock in $rocks; do
         caseDict -case "$c" constant/loading -entry plates/crushingPressure $verb "[Pa] $crushing" > /dev/null
     fi
     [ -z "$endTime" ] || caseDict -case "$c" system/controlDict -entry endTime -set "$endTime" > /dev/null
+    [ -z "$fractureEnergy" ] || caseDict -case "$c" constant/rockProperties -entry dfh/fractureEnergy -add "[N/m] $fractureEnergy" > /dev/null
+    [ -z "$weibullStress" ] || caseDict -case "$c" constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
     [ -z "$massStep" ] || caseDict -case "$c" system/controlDict -entry massScalingTimeStep -set "$massStep" > /dev/null
     caseDict -case "$c" system/controlDict -entry writeInterval -set 1 > /dev/null  # VTK at the end only
     (cd "$c" && meshRock > log.meshRock 2>&1) || fail "meshRock $rock: $(tail -3 "$c/log.meshRock")"

@@ -171,6 +171,121 @@ TEST_CASE("DFH erosion: an element leaves the model once its set number of direc
     CHECK_THROWS_WITH(KstDfhMaterial(wrong), Catch::Contains("erodeAfterCracks"));
 }
 
+TEST_CASE("crack band: the band width is the element's extent across the crack", "[fem][dfh]")
+{
+    // The corner tet (0,0,0) (L,0,0) (0,L,0) (0,0,L): grad N = (-1,-1,-1)/L, x/L, y/L, z/L.
+    const double L = 3e-3;
+    TetMesh mesh;
+    mesh.nodes = {{0, 0, 0}, {L, 0, 0}, {0, L, 0}, {0, 0, L}};
+    mesh.tets = {{0, 1, 2, 3}};
+    mesh.tetTags = {0};
+    const ElementGeometry geometry = makeElementGeometry(mesh);
+    CHECK(kstDfh::crackBandWidth(geometry.gradients.data(), Vec3{1, 0, 0}) == Approx(L));
+    // Along the diagonal the element's extent is L / sqrt(3) (from the origin to the face x+y+z = L).
+    const double r = 1.0 / std::sqrt(3.0);
+    CHECK(kstDfh::crackBandWidth(geometry.gradients.data(), Vec3{r, r, r}) == Approx(L * r));
+}
+
+TEST_CASE("crack band: a crack softens linearly and dissipates G_F per unit crack area", "[fem][dfh]")
+{
+    // One element in uniaxial strain along x (u = eps x, no lateral strain) driven through
+    // the whole softening: the work done beyond the elastic energy at the peak is the
+    // fracture energy times the crack area V / h, for two element sizes.
+    for (double edge : {1e-3, 4e-3}) {
+        const TetMesh mesh = test::regularTet(edge);
+        const ElementGeometry geometry = makeElementGeometry(mesh);
+        MaterialParameters p;
+        p.referenceVolume = 1e-9;
+        p.fractureEnergy = 30.0;  // N/m
+        p.kstA0 = 1e20;           // no plastic flow and no tensile cutoff in this test
+        p.tensilePressureCutoff = -1e12;
+        KstDfhMaterial material(p);
+        material.initialise(geometry);
+        KstDfhPointState state = material.pointState(0);
+        const double strength = 10e6;
+        state.failureStress[0] = strength, state.failureStress[1] = state.failureStress[2] = 1e30;
+        material.setPointState(0, state);
+        const KstDfhConstants& c = material.constants();
+        const double M = c.elastic.pWaveModulus();
+        const double h = kstDfh::crackBandWidth(geometry.gradients.data(), Vec3{1, 0, 0});
+        const double wc = 2.0 * p.fractureEnergy / (strength * h);
+        std::vector<double> u(12, 0.0), forces(12, 0.0), stress(6, 0.0);
+        auto stressAt = [&](double strain) {
+            for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;
+            REQUIRE(material.computeElementForces(geometry, u.data(), stress.data(), forces.data()) == -1);
+            return stress[0];
+        };
+        const double peakStrain = strength / M, endStrain = peakStrain + 1.2 * wc;
+        const int steps = 20000;
+        double work = 0.0, previousStress = 0.0, previousStrain = 0.0, largest = 0.0;
+        for (int i = 1; i <= steps; ++i) {
+            const double strain = endStrain * i / steps;
+            const double sxx = stressAt(strain);
+            work += 0.5 * (sxx + previousStress) * (strain - previousStrain);
+            largest = std::max(largest, sxx);
+            previousStress = sxx, previousStrain = strain;
+            // On the softening branch: t = sigma_F (1 - w / w_c) with w = eps - sigma / M.
+            if (strain > peakStrain && strain < wc) {
+                const double w = (strain - sxx / M);
+                CHECK(sxx == Approx(strength * (1.0 - w / wc)).margin(1e-6 * strength));
+            }
+        }
+        CHECK(largest == Approx(strength).epsilon(1e-3));
+        CHECK(previousStress == Approx(0.0).margin(1e-6 * strength));  // fully open: no tension
+        CHECK(material.damage(0, 0) == 1.0);
+        // Nothing is stored at the end: all the work went into the crack, int t dw = sigma_F w_c / 2.
+        const double dissipated = work * geometry.volumes[0];
+        INFO("edge " << edge << " h " << h << " wc " << wc << " softening strain "
+                     << material.pointState(0).softeningStrain[0]);
+        CHECK(dissipated == Approx(p.fractureEnergy * geometry.volumes[0] / h).epsilon(2e-3));
+    }
+}
+
+TEST_CASE("crack band: a softened crack unloads along its secant and closes in compression", "[fem][dfh]")
+{
+    const TetMesh mesh = test::regularTet(2e-3);
+    const ElementGeometry geometry = makeElementGeometry(mesh);
+    MaterialParameters p;
+    p.referenceVolume = 1e-9;
+    p.fractureEnergy = 30.0;
+    p.kstA0 = 1e20;
+    p.tensilePressureCutoff = -1e12;
+    KstDfhMaterial material(p);
+    material.initialise(geometry);
+    KstDfhPointState state = material.pointState(0);
+    const double strength = 10e6;
+    state.failureStress[0] = strength, state.failureStress[1] = state.failureStress[2] = 1e30;
+    material.setPointState(0, state);
+    const double M = material.constants().elastic.pWaveModulus();
+    std::vector<double> u(12, 0.0), forces(12, 0.0), stress(6, 0.0);
+    auto stressAt = [&](double strain) {
+        for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;
+        material.computeElementForces(geometry, u.data(), stress.data(), forces.data());
+        return stress[0];
+    };
+    double strain = 0.0;
+    for (int i = 1; i <= 400; ++i)
+        stressAt(strain = 2.0 * strength / M * i / 100.0);  // to 8 x the peak strain
+    const KstDfhPointState softened = material.pointState(0);
+    REQUIRE(softened.crackCount == 1);
+    const double kappa = softened.crackOpening[0], left = 1.0 - kappa / softened.softeningStrain[0];
+    REQUIRE(left > 0.1);  // still part-way down the softening branch
+    CHECK(material.damage(0, 0) == Approx(1.0 - left));
+    const double atTop = stressAt(strain);
+    CHECK(atTop == Approx(strength * left).epsilon(1e-6));
+    // Half the total strain back: the crack closes along the secant t = (t_kappa / kappa) w.
+    const double secant = strength * left / kappa;
+    const double half = stressAt(0.5 * strain);
+    const double w = 0.5 * strain * M / (M + secant);  // M (eps - w) = secant w
+    CHECK(half == Approx(secant * w).epsilon(1e-6));
+    CHECK(material.pointState(0).crackOpening[0] == Approx(kappa));  // no new damage on unloading
+    // Compression: the crack is closed and the element has its full stiffness.
+    CHECK(stressAt(-1e-4) == Approx(-M * 1e-4).epsilon(1e-9));
+    MaterialParameters wrong;
+    wrong.fractureEnergy = -1.0;
+    CHECK_THROWS_WITH(KstDfhMaterial(wrong), Catch::Contains("fractureEnergy"));
+}
+
 TEST_CASE("unknown material names list the known ones", "[fem]")
 {
     CHECK_THROWS_WITH(makeFemMaterial("granite", MaterialParameters{}),
