@@ -579,6 +579,14 @@ void FeFractureRun::printSetup() const
             "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
             m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus,
             1e-6 * m.weibullStress, 1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
+    if (r.parameters.materialName == "kstDfh" && m.damageEnabled) {
+        if (m.fractureEnergy > 0.0)
+            std::printf("; crack band G_F %.4g N/m", m.fractureEnergy);
+        else
+            std::printf("; cracks complete at the threshold");
+        if (m.crackShearRetention > 0.0) std::printf("; crack shear retention %.3g", m.crackShearRetention);
+        if (m.erodeAfterCracks > 0) std::printf("; erosion after %d cracks", m.erodeAfterCracks);
+    }
     std::printf("\n");
     std::printf(
         "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
