@@ -210,7 +210,7 @@ RF_HD inline SymTensor crackBandElasticStress(const KstDfhConstants& c, const Ks
             } else if (was == softening && w < kappa) {
                 branch[i] = kappa > 0.0 ? reloading : closed;
             } else if (was == free && w < wc && kappa < wc) {
-                branch[i] = w > kappa ? softening : reloading;
+                branch[i] = w > kappa || kappa <= 0.0 ? softening : reloading;  // no secant before an opening
             }
             changed = changed || branch[i] != was;
         }
