@@ -166,8 +166,9 @@ long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, 
             if (historyChanged) storePlasticHistory(e, state);
             if (state.crackCount != cracksBefore)
                 storeCracks(e, state);
-            else if (state.crackOpening[0] != openingBefore[0] || state.crackOpening[1] != openingBefore[1] ||
-                     state.crackOpening[2] != openingBefore[2])
+            else if (state.crackCount > 0 &&
+                     (state.crackOpening[0] != openingBefore[0] ||
+                      state.crackOpening[1] != openingBefore[1] || state.crackOpening[2] != openingBefore[2]))
                 storeCrackOpenings(e, state);
             // The crack that erodes the element takes its stress at once.
             return state.crackCount >= erodeAt ? SymTensor{} : stress;

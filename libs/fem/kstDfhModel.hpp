@@ -122,10 +122,8 @@ RF_HD inline double crackBandWidth(const double* gradients, const Vec3& n)
 // more than G_F, which docs/theory-fem.md states.
 RF_HD inline double softeningStrainOf(const KstDfhConstants& c, const KstDfhPointState& s, int k)
 {
-    const double mu = c.elastic.shearModulus, lambda = c.elastic.lambda;
-    const double youngsModulus = mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
     const double strength = s.failureStress[k];
-    const double steepest = 2.0 * strength / youngsModulus;
+    const double steepest = 2.0 * strength / c.elastic.youngsModulus();
     if (!s.elementGradients) return steepest;
     const Vec3 n{s.crackFrame.m[k][0], s.crackFrame.m[k][1], s.crackFrame.m[k][2]};
     const double h = crackBandWidth(s.elementGradients, n);
@@ -140,6 +138,25 @@ RF_HD inline double remainingStrength(const KstDfhPointState& s, int k, double o
     const double kappa = opening > s.crackOpening[k] ? opening : s.crackOpening[k];
     const double left = 1.0 - kappa / s.softeningStrain[k];
     return left > 0.0 ? left : 0.0;
+}
+
+// The stress of a cracked element back in the global frame: in the crack frame (e, its
+// strain) the normal stresses are the volumetric part plus 2 mu (e_i - w_i) with the openings
+// w_i, and a shear component between directions i and j keeps the smaller of the two
+// cracks' shear factors.
+RF_HD inline SymTensor crackFrameStress(const KstDfhPointState& s, const SymTensor& e, double twoMu,
+                                        double volumetric, const double opening[3], const double keep[3])
+{
+    const double r01 = keep[0] < keep[1] ? keep[0] : keep[1];
+    const double r12 = keep[1] < keep[2] ? keep[1] : keep[2];
+    const double r20 = keep[2] < keep[0] ? keep[2] : keep[0];
+    const SymTensor local = {volumetric + twoMu * (e.xx - opening[0]),
+                             volumetric + twoMu * (e.yy - opening[1]),
+                             volumetric + twoMu * (e.zz - opening[2]),
+                             r01 * twoMu * e.xy,
+                             r12 * twoMu * e.yz,
+                             r20 * twoMu * e.zx};
+    return fromFrame(local, s.crackFrame);
 }
 
 // Step 2 with a crack band: the open cracks i carry a cohesive normal stress t_i(w_i) of
@@ -225,16 +242,7 @@ RF_HD inline SymTensor crackBandElasticStress(const KstDfhConstants& c, const Ks
             const double left = remainingStrength(s, i, opening[i]);
             keep[i] = left > c.crackShearRetention ? left : c.crackShearRetention;
         }
-    const double r01 = keep[0] < keep[1] ? keep[0] : keep[1];
-    const double r12 = keep[1] < keep[2] ? keep[1] : keep[2];
-    const double r20 = keep[2] < keep[0] ? keep[2] : keep[0];
-    const SymTensor crackFrameStress = {volumetric + twoMu * (strainNormal[0] - opening[0]),
-                                        volumetric + twoMu * (strainNormal[1] - opening[1]),
-                                        volumetric + twoMu * (strainNormal[2] - opening[2]),
-                                        r01 * twoMu * e.xy,
-                                        r12 * twoMu * e.yz,
-                                        r20 * twoMu * e.zx};
-    return fromFrame(crackFrameStress, s.crackFrame);
+    return crackFrameStress(s, e, twoMu, volumetric, opening, keep);
 }
 
 // Step 2: elastic stress with the frozen cracks. In the crack frame, the opening
@@ -280,16 +288,9 @@ RF_HD inline SymTensor crackedElasticStress(const KstDfhConstants& c, const KstD
     }
     double sumOpening = opening[0] + opening[1] + opening[2];
     const double volumetric = lambda * (trialTrace - sumOpening);
-    const double r01 = open[0] || open[1] ? c.crackShearRetention : 1.0;
-    const double r12 = open[1] || open[2] ? c.crackShearRetention : 1.0;
-    const double r20 = open[2] || open[0] ? c.crackShearRetention : 1.0;
-    const SymTensor crackFrameStress = {volumetric + twoMu * (strainNormal[0] - opening[0]),
-                                        volumetric + twoMu * (strainNormal[1] - opening[1]),
-                                        volumetric + twoMu * (strainNormal[2] - opening[2]),
-                                        r01 * twoMu * e.xy,
-                                        r12 * twoMu * e.yz,
-                                        r20 * twoMu * e.zx};
-    return fromFrame(crackFrameStress, s.crackFrame);
+    double keep[3];  // shear stiffness kept by each crack: the retention while it is open
+    for (int i = 0; i < 3; ++i) keep[i] = open[i] ? c.crackShearRetention : 1.0;
+    return crackFrameStress(s, e, twoMu, volumetric, opening, keep);
 }
 
 // Step 3: KST return of a trial stress. Returns the admissible stress; `yielded` tells

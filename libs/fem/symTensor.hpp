@@ -166,6 +166,10 @@ struct IsotropicElasticity {
                 youngsModulus / (2.0 * (1.0 + poissonRatio))};
     }
     RF_HD double bulkModulus() const { return lambda + 2.0 * shearModulus / 3.0; }
+    RF_HD double youngsModulus() const
+    {
+        return shearModulus * (3.0 * lambda + 2.0 * shearModulus) / (lambda + shearModulus);
+    }
     // lambda + 2 mu: the modulus of longitudinal (P) waves.
     RF_HD double pWaveModulus() const { return lambda + 2.0 * shearModulus; }
     RF_HD SymTensor stress(const SymTensor& strain) const

@@ -24,6 +24,44 @@ SymTensor compressionWithShear(double volumetric, double shear)
     return e;
 }
 
+// One regular tet of the crack-band model (G_F 30 N/m) whose first threshold is `strength`
+// (the others out of reach), without plastic flow or tensile cutoff, driven in uniaxial strain
+// along x (u = eps x, no lateral strain).
+struct CrackBandElement {
+    static constexpr double fractureEnergy = 30.0;  // N/m
+    TetMesh mesh;
+    ElementGeometry geometry;
+    KstDfhMaterial material;
+    std::vector<double> u = std::vector<double>(12, 0.0), forces = std::vector<double>(12, 0.0),
+                        stress = std::vector<double>(6, 0.0);
+    long long lastResult = -1;  // computeElementForces' return of the last stretch
+
+    static MaterialParameters parameters()
+    {
+        MaterialParameters p;
+        p.referenceVolume = 1e-9;
+        p.fractureEnergy = fractureEnergy;
+        p.kstA0 = 1e20;  // no plastic flow and no tensile cutoff in these tests
+        p.tensilePressureCutoff = -1e12;
+        return p;
+    }
+    CrackBandElement(double edge, double strength)
+        : mesh(test::regularTet(edge)), geometry(makeElementGeometry(mesh)), material(parameters())
+    {
+        material.initialise(geometry);
+        KstDfhPointState state = material.pointState(0);
+        state.failureStress[0] = strength, state.failureStress[1] = state.failureStress[2] = 1e30;
+        material.setPointState(0, state);
+    }
+    // sigma_xx after straining the element to eps_xx = strain.
+    double stressAt(double strain)
+    {
+        for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;
+        lastResult = material.computeElementForces(geometry, u.data(), stress.data(), forces.data());
+        return stress[0];
+    }
+};
+
 }  // namespace
 
 TEST_CASE("KST: a point driven past the surface returns to it at fixed pressure and stays on it",
@@ -189,31 +227,20 @@ TEST_CASE("crack band: the band width is the element's extent across the crack",
 TEST_CASE("crack band: a crack softens linearly and dissipates G_F per unit crack area", "[fem][dfh]")
 {
     // One element in uniaxial strain along x (u = eps x, no lateral strain) driven through
-    // the whole softening: the work done beyond the elastic energy at the peak is the
-    // fracture energy times the crack area V / h, for two element sizes.
+    // the whole softening: all the work done goes into the crack, the fracture energy times
+    // the crack area V / h, for two element sizes.
     for (double edge : {1e-3, 4e-3}) {
-        const TetMesh mesh = test::regularTet(edge);
-        const ElementGeometry geometry = makeElementGeometry(mesh);
-        MaterialParameters p;
-        p.referenceVolume = 1e-9;
-        p.fractureEnergy = 30.0;  // N/m
-        p.kstA0 = 1e20;           // no plastic flow and no tensile cutoff in this test
-        p.tensilePressureCutoff = -1e12;
-        KstDfhMaterial material(p);
-        material.initialise(geometry);
-        KstDfhPointState state = material.pointState(0);
         const double strength = 10e6;
-        state.failureStress[0] = strength, state.failureStress[1] = state.failureStress[2] = 1e30;
-        material.setPointState(0, state);
-        const KstDfhConstants& c = material.constants();
-        const double M = c.elastic.pWaveModulus();
+        CrackBandElement element(edge, strength);
+        const ElementGeometry& geometry = element.geometry;
+        KstDfhMaterial& material = element.material;
+        const double M = material.constants().elastic.pWaveModulus();
         const double h = kstDfh::crackBandWidth(geometry.gradients.data(), Vec3{1, 0, 0});
-        const double wc = 2.0 * p.fractureEnergy / (strength * h);
-        std::vector<double> u(12, 0.0), forces(12, 0.0), stress(6, 0.0);
+        const double wc = 2.0 * CrackBandElement::fractureEnergy / (strength * h);
         auto stressAt = [&](double strain) {
-            for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;
-            REQUIRE(material.computeElementForces(geometry, u.data(), stress.data(), forces.data()) == -1);
-            return stress[0];
+            const double sxx = element.stressAt(strain);
+            REQUIRE(element.lastResult == -1);
+            return sxx;
         };
         const double peakStrain = strength / M, endStrain = peakStrain + 1.2 * wc;
         const int steps = 20000;
@@ -237,32 +264,17 @@ TEST_CASE("crack band: a crack softens linearly and dissipates G_F per unit crac
         const double dissipated = work * geometry.volumes[0];
         INFO("edge " << edge << " h " << h << " wc " << wc << " softening strain "
                      << material.pointState(0).softeningStrain[0]);
-        CHECK(dissipated == Approx(p.fractureEnergy * geometry.volumes[0] / h).epsilon(2e-3));
+        CHECK(dissipated == Approx(CrackBandElement::fractureEnergy * geometry.volumes[0] / h).epsilon(2e-3));
     }
 }
 
 TEST_CASE("crack band: a softened crack unloads along its secant and closes in compression", "[fem][dfh]")
 {
-    const TetMesh mesh = test::regularTet(2e-3);
-    const ElementGeometry geometry = makeElementGeometry(mesh);
-    MaterialParameters p;
-    p.referenceVolume = 1e-9;
-    p.fractureEnergy = 30.0;
-    p.kstA0 = 1e20;
-    p.tensilePressureCutoff = -1e12;
-    KstDfhMaterial material(p);
-    material.initialise(geometry);
-    KstDfhPointState state = material.pointState(0);
     const double strength = 10e6;
-    state.failureStress[0] = strength, state.failureStress[1] = state.failureStress[2] = 1e30;
-    material.setPointState(0, state);
+    CrackBandElement element(2e-3, strength);
+    const KstDfhMaterial& material = element.material;
     const double M = material.constants().elastic.pWaveModulus();
-    std::vector<double> u(12, 0.0), forces(12, 0.0), stress(6, 0.0);
-    auto stressAt = [&](double strain) {
-        for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;
-        material.computeElementForces(geometry, u.data(), stress.data(), forces.data());
-        return stress[0];
-    };
+    auto stressAt = [&](double strain) { return element.stressAt(strain); };
     double strain = 0.0;
     for (int i = 1; i <= 400; ++i)
         stressAt(strain = 2.0 * strength / M * i / 100.0);  // to 8 x the peak strain
