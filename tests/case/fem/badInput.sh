@@ -15,9 +15,9 @@ v=$(variant weibull); caseDict -case "$v" constant/rockProperties -entry dfh/wei
 expectUserError "weibullModulus" feFractureSolver -case "$v"
 v=$(variant erosion); caseDict -case "$v" constant/rockProperties -entry dfh/erodeAfterCracks -add 1.5 > /dev/null
 expectUserError "erodeAfterCracks" feFractureSolver -case "$v"
-v=$(variant fractureEnergy); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -add "[N/m] -30" > /dev/null
+v=$(variant fractureEnergy); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] -30" > /dev/null
 expectUserError "fractureEnergy" feFractureSolver -case "$v"
-v=$(variant fractureEnergyUnits); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -add "[Pa] 30" > /dev/null
+v=$(variant fractureEnergyUnits); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -set "[Pa] 30" > /dev/null
 expectUserError "fractureEnergy" feFractureSolver -case "$v"
 v=$(variant gap); caseDict -case "$v" constant/loading -entry plates/startGap -set 1 > /dev/null
 expectUserError "never touches the specimen" feFractureSolver -case "$v"

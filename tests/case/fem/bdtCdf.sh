@@ -5,7 +5,7 @@
 # (seed, failureLoad), and the CDF plot against the measured sample (plotCdf). Passes when
 # every simulated failure load lies within the measured range (min..max of Table 5).
 # Usage: bdtCdf.sh <scratch> [granite|limestone] [seeds] [element size, default 2 mm]
-#        [dfh/fractureEnergy N/m, default the tutorial's (none): the crack band]
+#        [dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
 #        [dfh/weibullStress Pa, default the tutorial's].
 source "$(dirname "$0")/../caseTestFunctions"
 rock="${2:-granite}"
@@ -18,7 +18,7 @@ copyTutorial "tutorials/BDT/${rock}FEM" "$work/mesh"
 cd "$work/mesh"
 caseDict -case . system/feMeshDict -entry elementSize -set "$h" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set 1 > /dev/null  # no VTK before the end
-[ -z "$fractureEnergy" ] || caseDict -case . constant/rockProperties -entry dfh/fractureEnergy -add "[N/m] $fractureEnergy" > /dev/null
+[ -z "$fractureEnergy" ] || caseDict -case . constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
 [ -z "$weibullStress" ] || caseDict -case . constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
 meshRock > log.meshRock 2>&1 || fail "meshRock: $(tail -3 log.meshRock)"
 printf '# seed [-]\tfailureLoad [N]\n' > "$work/results.dat"

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The BDT granite FEM case (coarser 2 mm mesh) runs to failure with a single main crack
-# along the loaded diameter: a peak, a drop of more than 50 %, and most of the cracked
-# volume (D1 = 1) within |x| < D/8 of the vertical mid-plane. A run on 2 threads, stopped
+# along the loaded diameter: a peak, a drop of more than 25 % (the tutorial's crack band:
+# the split halves still carry about two thirds of the peak, and the run ends at its 30 %
+# stop criterion), and most of the cracked volume (D1 = 1) within |x| < D/8 of the
+# vertical mid-plane. A run on 2 threads, stopped
 # at a write time and restarted, gives bitwise the plateForce.dat of the uninterrupted run
 # on 1 thread: thread-count independence and restart exactness in one comparison (one
 # solver run fewer than checking them apart; if it fails, run the two checks apart to
@@ -27,7 +29,7 @@ grep -E "^Failure load|UTS|^Cracked|^Quasi" "$log"
 awk -F'\t' '!/^#/ { f = $3; if (f > peak) { peak = f; tpeak = $1 } last = f }
     END { printf "peak %.1f N at t = %g s, final %.1f N\n", peak, tpeak, last;
           if (!(peak > 5000)) { print "FAIL: no load built up"; exit 1 }
-          if (!(last < 0.5 * peak)) { print "FAIL: the force did not drop by more than 50 %"; exit 1 } }' \
+          if (!(last < 0.75 * peak)) { print "FAIL: the force did not drop by more than 25 %"; exit 1 } }' \
     "$work/threads1/$dat" || fail "BDT did not fail as expected"
 [ -s "$work/threads1/postProcessing/failureLoad/0/failureLoad.dat" ] || fail "no failureLoad.dat"
 [ -s "$work/threads1/postProcessing/extensometer/0/extensometer.dat" ] || fail "no extensometer.dat"
