@@ -4,6 +4,8 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "calibration/calibrationDetail.hpp"
@@ -27,6 +29,22 @@ std::vector<double> physicalValues(const CalibrationStudy& study, const std::vec
         values.push_back(
             std::stod(valueText(fromUnit(x[i], study.parameters[i].low, study.parameters[i].high))));
     return values;
+}
+
+Objective reusingRepeatedSets(const CalibrationStudy& study, Objective objective)
+{
+    auto objectives = std::make_shared<std::map<std::vector<double>, double>>();
+    return [&study, objective = std::move(objective), objectives](const std::vector<double>& x) {
+        const std::vector<double> values = physicalValues(study, x);
+        if (const auto seen = objectives->find(values); seen != objectives->end()) {
+            std::cout << "calibrateModel: " << describeValues(study, values) << " again: objective "
+                      << format(seen->second) << " of its earlier runs reused" << std::endl;
+            return seen->second;
+        }
+        const double value = objective(x);
+        objectives->emplace(values, value);
+        return value;
+    };
 }
 
 std::vector<double> unitValues(const CalibrationStudy& study, const std::vector<double>& values)

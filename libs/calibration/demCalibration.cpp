@@ -261,7 +261,8 @@ CalibrationOutcome calibrateDemBobyqa(const CalibrationStudy& study, int jobs)
     settings.maxEvaluations = study.maxEvaluations;
     settings.initialStep = study.initialStep;
     settings.relativeTolerance = study.tolerance;
-    const Minimum m = minimiseBobyqa(simulatedObjective, unitValues(study, study.reference), settings);
+    const Minimum m = minimiseBobyqa(reusingRepeatedSets(study, simulatedObjective),
+                                     unitValues(study, study.reference), settings);
     std::cout << "calibrateModel: BOBYQA stopped after " << m.evaluations << " evaluations (" << m.status
               << ")" << std::endl;
 

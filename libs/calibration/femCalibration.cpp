@@ -86,7 +86,8 @@ CalibrationOutcome calibrateFemBobyqa(const CalibrationStudy& study, int jobs)
     settings.maxEvaluations = study.maxEvaluations;
     settings.initialStep = study.initialStep;
     settings.relativeTolerance = study.tolerance;
-    const Minimum m = minimiseBobyqa(objective, unitValues(study, study.reference), settings);
+    const Minimum m =
+        minimiseBobyqa(reusingRepeatedSets(study, objective), unitValues(study, study.reference), settings);
     std::cout << "calibrateModel: BOBYQA stopped after " << m.evaluations << " evaluations (" << m.status
               << ")" << std::endl;
 

@@ -62,3 +62,24 @@ TEST_CASE("an error in the objective stops the search and reaches the caller", "
     };
     CHECK_THROWS_WITH(minimiseBobyqa(failing, {0, 0}, {}), "run failed");
 }
+
+#include "calibration/calibrationDetail.hpp"
+
+TEST_CASE("a parameter set asked for again reuses its objective", "[calibration]")
+{
+    CalibrationStudy study;
+    study.parameters.push_back(
+        {"weibullStress", "constant/rockProperties", "dfh/weibullStress", "Pa", 8e6, 12e6});
+    int simulations = 0;
+    const Objective simulated = [&](const std::vector<double>& x) {
+        ++simulations;
+        return x[0] * x[0] + 0.5;
+    };
+    const Objective objective = detail::reusingRepeatedSets(study, simulated);
+    const double first = objective({0.25});
+    CHECK(objective({0.25}) == first);          // the same point
+    CHECK(objective({0.25 + 1e-12}) == first);  // the same rounded values: the same runs
+    CHECK(simulations == 1);
+    CHECK(objective({-0.5}) == Approx(0.75));  // another set runs
+    CHECK(simulations == 2);
+}
