@@ -6,13 +6,15 @@
 # every simulated failure load lies within the measured range (min..max of Table 5).
 # Usage: bdtCdf.sh <scratch> [granite|limestone] [seeds] [element size, default 2 mm]
 #        [dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
-#        [dfh/weibullStress Pa, default the tutorial's].
+#        [dfh/weibullStress Pa, default the tutorial's]
+#        [dfh/referenceVolume m^3, default the tutorial's].
 source "$(dirname "$0")/../caseTestFunctions"
 rock="${2:-granite}"
 seeds="${3:-10}"
 h="${4:-2.0e-3}"
 fractureEnergy="${5:-}"
 weibullStress="${6:-}"
+referenceVolume="${7:-}"
 measured="$src/cases/experiments/BDT/$rock/measurements"
 copyTutorial "tutorials/BDT/${rock}FEM" "$work/mesh"
 cd "$work/mesh"
@@ -20,6 +22,7 @@ caseDict -case . system/feMeshDict -entry elementSize -set "$h" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set 1 > /dev/null  # no VTK before the end
 [ -z "$fractureEnergy" ] || caseDict -case . constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
 [ -z "$weibullStress" ] || caseDict -case . constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
+[ -z "$referenceVolume" ] || caseDict -case . constant/rockProperties -entry dfh/referenceVolume -set "[m^3] $referenceVolume" > /dev/null
 meshRock > log.meshRock 2>&1 || fail "meshRock: $(tail -3 log.meshRock)"
 printf '# seed [-]\tfailureLoad [N]\n' > "$work/results.dat"
 for seed in $(seq 1 "$seeds"); do
