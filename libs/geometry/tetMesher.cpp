@@ -2,6 +2,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -57,12 +58,35 @@ double sizeForCount(double volume, int count)
     return std::cbrt(6.0 * std::sqrt(2.0) * volume / count);
 }
 
-void setSize(double h)
+void setSize(double h, double smallestSize)
 {
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * h);
+    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.5 * smallestSize);
     gmsh::option::setNumber("Mesh.MeshSizeMax", h);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+}
+
+// The graded size of a contact-refined mesh at height z: the contact size up to `distance`
+// from the lowest or highest point (where the plates touch), then linear to the global size
+// over as much again. Only z counts, so the whole slab under each plate is fine: a rock's
+// contact point is not known before it settles, a disc's contact line runs across it.
+double contactGradedSize(double z, double zMin, double zMax, double h, const TetMeshRequest& request)
+{
+    const double fromPlate = std::min(z - zMin, zMax - z);
+    const double ramp = std::clamp((fromPlate - request.contactDistance) / request.contactDistance, 0.0, 1.0);
+    return request.contactSize + ramp * (h - request.contactSize);
+}
+
+void checkContactRefinement(const TetMeshRequest& request)
+{
+    if (request.contactSize == 0.0 && request.contactDistance == 0.0) return;
+    if (!(request.elementSize > 0))
+        throw UserError(
+            "contact refinement needs 'elementSize' (not 'elementCount'): the graded mesh's count "
+            "is not a size");
+    if (!(request.contactSize > 0 && request.contactSize < request.elementSize))
+        throw UserError("contact refinement: its element size must be > 0 and below the mesh's elementSize");
+    if (!(request.contactDistance > 0)) throw UserError("contact refinement: its distance must be > 0");
 }
 
 // Extract nodes and linear tets of the current model, renumbered from 0.
@@ -107,6 +131,8 @@ TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request,
 {
     if (!(request.elementSize > 0) && request.elementCount <= 0)
         throw UserError("a tetrahedral mesh needs 'elementSize' (> 0) or 'elementCount' (> 0)");
+    checkContactRefinement(request);
+    const bool contactRefined = request.contactSize > 0;
     double h =
         request.elementSize > 0 ? request.elementSize : sizeForCount(solidVolume, request.elementCount);
     TetMeshingResult result;
@@ -114,9 +140,18 @@ TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request,
     for (int pass = 0; pass < passes; ++pass) {
         GmshSession session;
         build();
-        setSize(h);
+        setSize(h, contactRefined ? request.contactSize : h);
+        if (contactRefined) {
+            double xMin, yMin, zMin, xMax, yMax, zMax;
+            gmsh::model::getBoundingBox(-1, -1, xMin, yMin, zMin, xMax, yMax, zMax);
+            // gmsh takes the smallest of this and its other size constraints.
+            gmsh::model::mesh::setSizeCallback([=, &request](int, int, double, double, double z) {
+                return contactGradedSize(z, zMin, zMax, h, request);
+            });
+        }
         gmsh::option::setNumber("Mesh.Optimize", request.optimise > 0 ? 1 : 0);
         gmsh::model::mesh::generate(3);
+        if (contactRefined) gmsh::model::mesh::removeSizeCallback();  // it refers to this call's request
         result = extractMesh();
         if (result.tets.empty())
             throw UserError("gmsh produced no tetrahedra; check that the surface is closed");

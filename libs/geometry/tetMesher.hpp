@@ -18,6 +18,11 @@ struct TetMeshRequest {
     double elementSize = 0.0;  // target edge length [m]; or
     int elementCount = 0;      // target number of tetrahedra (size derived, one correction pass)
     int optimise = 1;          // gmsh Netgen/standard optimisation passes
+    // Finer elements where the plates touch (optional, with elementSize only): contactSize
+    // within contactDistance of the solid's lowest and highest z (the plates' axis), growing
+    // linearly to elementSize over another contactDistance. 0 = a uniform mesh.
+    double contactSize = 0.0;
+    double contactDistance = 0.0;
 };
 
 struct TetMeshingResult {

@@ -78,6 +78,12 @@ printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nver
 SETUP
 
 # ---- voronoiMesh ----------------------------------------------------------------------
+badCase contactRefinementNotFiner femNoMesh "feMeshDict" "below elementSize" meshRock -case . <<'SETUP'
+printf 'contactRefinement { elementSize [m] 10e-3; distance [m] 5e-3; }\n' >> system/feMeshDict
+SETUP
+badCase contactRefinementNoDistance femNoMesh "feMeshDict" "distance" meshRock -case . <<'SETUP'
+printf 'contactRefinement { elementSize [m] 1e-3; }\n' >> system/feMeshDict
+SETUP
 badCase voronoiBeforeMeshRock disc "geometryProperties" "run meshRock first" voronoiMesh -case . <<'SETUP'
 SETUP
 badCase oneCell meshed "voronoiMeshDict" "at least 2 cells" voronoiMesh -case . <<'SETUP'

@@ -46,3 +46,61 @@ TEST_CASE("a generated rock is meshed to a target element count", "[geometry]")
     CHECK(std::abs(mesh.relativeVolumeError()) < 1e-6);  // flat facets are meshed exactly
     CHECK(static_cast<double>(mesh.tets.size()) == Approx(3000).epsilon(0.35));
 }
+
+TEST_CASE("contact refinement makes the elements under the plates finer", "[geometry]")
+{
+    RockShape shape;
+    shape.volume = 45e-6;
+    shape.seed = 3;
+    const ConvexHull rock = generateRock(shape);
+    const fs::path msh = fs::temp_directory_path() / "rockfrac-test-geometry" / "refinedRock.msh";
+    TetMeshRequest request;
+    request.elementSize = 6e-3;
+    const TetMeshingResult uniform = meshSurfaceWithGmsh(rock.surface, request, msh);
+    request.contactSize = 2e-3;
+    request.contactDistance = 4e-3;
+    const TetMeshingResult refined = meshSurfaceWithGmsh(rock.surface, request, msh);
+    CHECK(std::abs(refined.relativeVolumeError()) < 1e-6);  // the same solid, exactly
+    CHECK(refined.tets.size() > 2 * uniform.tets.size());
+
+    // Mean element volume in the slabs next to the lowest and highest z and in the middle.
+    double zMin = 1e30, zMax = -1e30;
+    for (const auto& p : refined.nodes) zMin = std::min(zMin, p.z), zMax = std::max(zMax, p.z);
+    double volumeNear = 0, volumeMiddle = 0;
+    int near = 0, middle = 0;
+    for (const auto& t : refined.tets) {
+        const Vec3 a = refined.nodes[t[0]], b = refined.nodes[t[1]], c = refined.nodes[t[2]],
+                   d = refined.nodes[t[3]];
+        const double z = 0.25 * (a.z + b.z + c.z + d.z);
+        const double v = dot(b - a, cross(c - a, d - a)) / 6.0;
+        REQUIRE(v > 0);
+        const double fromPlate = std::min(z - zMin, zMax - z);
+        if (fromPlate < 3e-3) volumeNear += v, ++near;
+        if (fromPlate > 9e-3) volumeMiddle += v, ++middle;
+    }
+    REQUIRE(near > 0);
+    REQUIRE(middle > 0);
+    // Volumes scale as h^3: 2 mm against 6 mm is 27 x; ask for a clear 5 x.
+    CHECK(volumeMiddle / middle > 5.0 * volumeNear / near);
+}
+
+TEST_CASE("contact refinement rejects a size that is not finer, and an element count", "[geometry]")
+{
+    RockShape shape;
+    shape.volume = 45e-6;
+    const ConvexHull rock = generateRock(shape);
+    const fs::path msh = fs::temp_directory_path() / "rockfrac-test-geometry" / "badRefinement.msh";
+    TetMeshRequest request;
+    request.elementSize = 4e-3;
+    request.contactSize = 4e-3;
+    request.contactDistance = 5e-3;
+    CHECK_THROWS_WITH(meshSurfaceWithGmsh(rock.surface, request, msh), Catch::Contains("below the mesh's"));
+    request.contactSize = 2e-3;
+    request.contactDistance = 0.0;
+    CHECK_THROWS_WITH(meshSurfaceWithGmsh(rock.surface, request, msh),
+                      Catch::Contains("distance must be > 0"));
+    request.elementSize = 0.0;
+    request.elementCount = 1000;
+    request.contactDistance = 5e-3;
+    CHECK_THROWS_WITH(meshSurfaceWithGmsh(rock.surface, request, msh), Catch::Contains("not 'elementCount'"));
+}
