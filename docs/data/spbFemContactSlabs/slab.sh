@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# slab.sh <src case> <dest> <slab size m> : rerun a contact-refined SPB case with another slab size
+# slab.sh <src case> <dest> <slab size m> : rerun a contact-refined SPB case with another slab size.
+# <src case>: a rock case of tests/case/fem/spbFem.sh (4 mm) with, added to its system/feMeshDict,
+#     contactRefinement { elementSize [m] 1.5e-3; distance [m] 5e-3; }
 set -e
 src=$1; dst=$2; size=$3
 rm -rf "$dst"; mkdir -p "$dst"
