@@ -15,7 +15,8 @@
 #        [shape seed offset, default 0: added to each rock's meshRock seed, for an ensemble
 #         of generated shapes of the same volume and Zingg ratios]
 #        [dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
-#        [dfh/weibullStress Pa, default the tutorial's].
+#        [dfh/weibullStress Pa, default the tutorial's]
+#        [dfh/seed, default the tutorial's: the element thresholds' random stream].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
@@ -26,6 +27,7 @@ endTime="${8:-}"
 shapeOffset="${9:-0}"
 fractureEnergy="${10:-}"
 weibullStress="${11:-}"
+thresholdSeed="${12:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
@@ -51,6 +53,7 @@ for rock in $rocks; do
     [ -z "$endTime" ] || caseDict -case "$c" system/controlDict -entry endTime -set "$endTime" > /dev/null
     [ -z "$fractureEnergy" ] || caseDict -case "$c" constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
     [ -z "$weibullStress" ] || caseDict -case "$c" constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
+    [ -z "$thresholdSeed" ] || caseDict -case "$c" constant/rockProperties -entry dfh/seed -set "$thresholdSeed" > /dev/null
     [ -z "$massStep" ] || caseDict -case "$c" system/controlDict -entry massScalingTimeStep -set "$massStep" > /dev/null
     caseDict -case "$c" system/controlDict -entry writeInterval -set 1 > /dev/null  # VTK at the end only
     (cd "$c" && meshRock > log.meshRock 2>&1) || fail "meshRock $rock: $(tail -3 "$c/log.meshRock")"
