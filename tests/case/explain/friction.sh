@@ -10,6 +10,7 @@ export OMP_NUM_THREADS=1
 copyTutorial tutorials/explainGap "$work/tutorial"
 cd "$work/tutorial"
 source "$(dirname "$0")/scenarioFunctions"
+smallSizePlates spb
 MODEL=spb EFFECTS=$(bySize "contactCrumbling machineCompliance plateFriction" "contactCrumbling plateFriction") \
     scenario friction "plateFriction { frictionFactor 0.05; }" explained plateFriction
 echo "PASS"

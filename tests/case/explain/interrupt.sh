@@ -10,6 +10,7 @@ source "$(dirname "$0")/../caseTestFunctions"
 export OMP_NUM_THREADS=1
 copyTutorial tutorials/explainGap "$work/t"
 cd "$work/t"
+smallSizePlates bdt
 sed -i "s#^measurements .*#measurements \"$src/cases/experiments/BDT/granite/measurements\";#" \
     paperBDT/system/explainGapDict
 grep -q "^measurements \"$src" paperBDT/system/explainGapDict || fail "the measurements path did not apply"

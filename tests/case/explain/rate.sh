@@ -13,6 +13,7 @@ export OMP_NUM_THREADS=1
 copyTutorial tutorials/explainGap "$work/tutorial"
 cd "$work/tutorial"
 source "$(dirname "$0")/scenarioFunctions"
+smallSizePlates bdt
 makeFastCase
 # At the small size the screen holds the rate effect and one other (every effect's code runs
 # in case.explain.twins' allOn simulation).

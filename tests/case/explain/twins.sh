@@ -9,6 +9,7 @@ source "$(dirname "$0")/../caseTestFunctions"
 export OMP_NUM_THREADS=1
 copyTutorial tutorials/explainGap "$work/tutorial"
 cd "$work/tutorial"
+smallSizePlates bdt
 
 # The neutral effects file is the baseline bit for bit.
 cp -r bdt neutral
