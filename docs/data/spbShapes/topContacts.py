@@ -5,8 +5,8 @@ Usage: topContacts.py <case> [<case> ...]
 Reads <case>/constant/triSurface/specimen.stl (ASCII, written by meshRock, the rock seated
 on its lower plate, z up) and prints, for each case, the depth below the highest vertex of
 the next three vertices and their horizontal distance from it. A second vertex a few tenths
-of a millimetre down is reached by the plate before the rock fails (0.2-0.7 mm of plate
-travel in the SPB runs), so the plate then loads an edge or a facet instead of a point.
+of a millimetre down, far from the first, makes the top nearly an edge or a facet: a blunt
+apex under the plate (docs/validation.md section 3, "Which rocks over-predict most").
 Standard library only.
 """
 import math
