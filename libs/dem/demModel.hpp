@@ -21,7 +21,7 @@
 
 #include "dem/bondLaw.hpp"
 #include "dem/cellKernels.hpp"
-#include "dem/contactLaw.hpp"
+#include "dem/contactKernels.hpp"
 #include "dem/demParameters.hpp"
 #include "dem/demState.hpp"
 #include "dem/neighbourSearch.hpp"

@@ -9,7 +9,7 @@
 
 #include "core/vec3.hpp"
 #include "dem/bondLaw.hpp"
-#include "dem/contactLaw.hpp"
+#include "dem/contactKernels.hpp"
 #include "dem/quat.hpp"
 
 namespace rockfrac {

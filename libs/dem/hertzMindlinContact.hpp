@@ -4,7 +4,7 @@
 // cells with the dilation radius as the contact radius.
 #include <cmath>
 
-#include "dem/contactLaw.hpp"
+#include "dem/contactKernels.hpp"
 
 namespace rockfrac {
 

@@ -4,7 +4,7 @@
 // touch a surface at a core vertex (on a face, edge or vertex of the surface), or with
 // a core edge or face on a ridge or a convex vertex; flat and concave edges never hold
 // the nearest point. The wall contact pairs core edges with ridges and the core with
-// convex vertices (contactLaw.hpp, wallPatch; docs/theory-dem.md §7).
+// convex vertices (wallContact.hpp, wallPatch; docs/theory-dem.md §7).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -13,7 +13,7 @@
 
 namespace rockfrac {
 
-// One 16-bit word per triangle, bits as read by ridgeBit/convexCornerBit (contactLaw.hpp):
+// One 16-bit word per triangle, bits as read by ridgeBit/convexCornerBit (wallContact.hpp):
 // bit k (k = 0, 1, 2): edge k (corner k to corner k+1) is a ridge seen from the winding
 // side; bit 3 + k: seen from the other side; bit 6 + k / 9 + k: corner k is a convex vertex
 // seen from the winding / other side. Each edge and vertex is flagged on its lowest-numbered

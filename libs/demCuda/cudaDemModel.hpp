@@ -3,7 +3,7 @@
 //
 // A CudaDemModel takes a DemModel built on the host, uploads its arrays to device
 // memory (plain cudaMalloc, no managed memory) and steps them there with the same
-// RF_HD kernels the OpenMP path runs (dem/bondLaw.hpp, dem/contactLaw.hpp,
+// RF_HD kernels the OpenMP path runs (dem/bondLaw.hpp, dem/contactKernels.hpp,
 // dem/cellKernels.hpp), one GPU thread per interface, contact item or cell.
 //
 // On the device, every step: kinematic caches, bond forces and damage, cell-cell

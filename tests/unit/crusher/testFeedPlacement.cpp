@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "crusher/feedRock.hpp"
 #include "crusher/linerClearance.hpp"
-#include "dem/contactLaw.hpp"
+#include "dem/contactKernels.hpp"
 #include "dem/demModel.hpp"
 #include "dem/quat.hpp"
 #include "voronoi/tessellation.hpp"
