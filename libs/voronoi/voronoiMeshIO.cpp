@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/atomicFile.hpp"
+#include "core/checksum.hpp"
 #include "core/error.hpp"
 #include "voronoi/meshTopology.hpp"
 
@@ -194,23 +195,6 @@ private:
     std::string label_;
 };
 
-// Word-wise FNV-1a over the payload: each 8-byte little-endian word (the last
-// one zero-padded) is xor-ed in and multiplied by the FNV prime, then the
-// length. Catches truncation, bit flips and files from different runs.
-std::uint64_t checksum(const unsigned char* data, std::size_t size)
-{
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    const std::uint64_t prime = 0x100000001b3ULL;
-    std::size_t i = 0;
-    for (; i + 8 <= size; i += 8) hash = (hash ^ loadU64(data + i)) * prime;
-    if (i < size) {
-        unsigned char tail[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        std::memcpy(tail, data + i, size - i);
-        hash = (hash ^ loadU64(tail)) * prime;
-    }
-    return (hash ^ size) * prime;
-}
-
 // ---- Binary file layout -----------------------------------------------------
 
 constexpr char magic[16] = {'r', 'o', 'c', 'k', 'f', 'r', 'a', 'c', '-', 'v', 'o', 'r', 'o', 'n', 'o', 'i'};
@@ -284,7 +268,7 @@ Bytes makeFile(FileKind kind, MeshInfo& info, const Bytes& payload)
     out.u64(counts.first);
     out.u64(counts.second);
     out.u64(0);  // reserved
-    const std::uint64_t sum = checksum(payload.data(), payload.size());
+    const std::uint64_t sum = fnv1aWords(payload.data(), payload.size());
     info.checksums[static_cast<int>(kind) - 1] = sum;
     out.u64(sum);
     out.u64(payload.size());
@@ -317,7 +301,7 @@ Bytes readCheckedFile(const fs::path& caseDir, const FileSpec& spec, const MeshI
     if (bytes.size() < expected) truncated();
     if (bytes.size() > expected || loadU64(&bytes[56]) != expected - headerBytes)
         fail(label, "expected " + std::to_string(expected) + " bytes, found " + std::to_string(bytes.size()));
-    const std::uint64_t sum = checksum(bytes.data() + headerBytes, bytes.size() - headerBytes);
+    const std::uint64_t sum = fnv1aWords(bytes.data() + headerBytes, bytes.size() - headerBytes);
     if (sum != loadU64(&bytes[48]) || sum != info.checksums[static_cast<int>(spec.kind) - 1])
         fail(label, "checksum mismatch (corrupt, or not from the run meshInfo describes)");
     return bytes;
@@ -662,11 +646,6 @@ void checkArraySizes(const VoronoiMesh& m)
 }
 
 }  // namespace
-
-std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size)
-{
-    return checksum(data, size);
-}
 
 void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 {
