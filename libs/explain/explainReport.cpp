@@ -11,9 +11,9 @@
 #include "core/error.hpp"
 #include "effects/modelEffect.hpp"
 #include "explain/explainAnalysis.hpp"
+#include "io/textTable.hpp"
+#include "plot/gnuplot.hpp"
 #include "stats/distances.hpp"
-#include "stats/gnuplot.hpp"
-#include "stats/textTable.hpp"
 
 namespace rockfrac::explain::detail {
 
@@ -45,7 +45,7 @@ void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, cons
 void Analysis::writeGapTable(const Fit& baseline, const Summaries& after) const
 {
     const fs::path dir = s_.directory;
-    stats::TextTable table;
+    TextTable table;
     table.names = {"feature",   "measuredFit",     "baseline",       "withEffect",   "zFitBefore",
                    "zFitAfter", "measuredHeldOut", "zHeldOutBefore", "zHeldOutAfter"};
     table.units = {"-", "SI", "SI", "SI", "-", "-", "SI", "-", "-"};
@@ -64,7 +64,7 @@ void Analysis::writeGapTable(const Fit& baseline, const Summaries& after) const
                               format(zb[k], 3), format(za[k], 3), format(cond_[c].held.features.value[f], 6),
                               format(hb[k], 3), format(ha[k], 3)});
     }
-    stats::writeTextTable(dir / "gapTable.dat", table);
+    writeTextTable(dir / "gapTable.dat", table);
 }
 
 // The calibration issue's metrics on the held-out half, before and after (per condition).
@@ -77,7 +77,7 @@ void Analysis::writeGapMetrics(const Fit& baseline, const Summaries& after,
         for (const auto& c : runs.features) p.push_back(c.peakForce);
         return p;
     };
-    stats::TextTable metrics;
+    TextTable metrics;
     metrics.names = {"metric", "baseline", "withEffect"};
     metrics.units = {"-", "-", "-"};
     for (std::size_t c = 0; c < cond_.size(); ++c) {
@@ -115,13 +115,13 @@ void Analysis::writeGapMetrics(const Fit& baseline, const Summaries& after,
         };
         metrics.rows.push_back({prefix + "curveNRMS", format(nrms(before), 3), format(nrms(withEffect), 3)});
     }
-    stats::writeTextTable(dir / "gapMetrics.dat", metrics);
+    writeTextTable(dir / "gapMetrics.dat", metrics);
 }
 
 void Analysis::writeScreeningTable(const ExplainOutcome& out) const
 {
     const fs::path dir = s_.directory;
-    stats::TextTable screen;
+    TextTable screen;
     screen.names = {"effect", "score",  "p",          "linearisedChange", "refitted", "value",
                     "low90",  "high90", "heldOutGap", "reduction",        "AIC",      "kept"};
     screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
@@ -133,7 +133,7 @@ void Analysis::writeScreeningTable(const ExplainOutcome& out) const
              se.confirmed ? format(se.intervalHigh, 4) : "-", se.confirmed ? format(se.heldOutGap, 3) : "-",
              se.confirmed ? format(se.reduction, 3) : "-", se.confirmed ? format(se.aic, 4) : "-",
              se.kept ? "yes" : "no"});
-    stats::writeTextTable(dir / "screening.dat", screen);
+    writeTextTable(dir / "screening.dat", screen);
 }
 
 // Machine-readable result (tests and scripts read it), and the report: every line said.
@@ -232,19 +232,19 @@ void Analysis::drawResidualPlot(const Fit& baseline, const Summaries& after, con
     }
     const std::string baselineTitle = plotBaselineTitle(nb_);
     std::ostringstream g;
-    g << stats::gnuplotDataBlock("z", rows) << "set title "
-      << stats::gnuplotString("Held-out specimens: feature error in standard errors (measured - simulated)")
+    g << plot::gnuplotDataBlock("z", rows) << "set title "
+      << plot::gnuplotString("Held-out specimens: feature error in standard errors (measured - simulated)")
       << "\nset style data histogram\nset style histogram clustered gap 1\nset style fill solid 0.8 "
          "border -1\n"
       << "set xtics (" << labels << ") rotate by -20\nset ylabel \"z\"\nset grid ytics\nset xzeroaxis lt -1\n"
       << "set yrange [" << format(zLow - 0.1 * (zHigh - zLow + 1.0), 4) << ":"
       << format(zHigh + 0.1 * (zHigh - zLow + 1.0), 4) << "]\n"
-      << stats::legendBelowPlot(2) << "plot $z using 2 title " << stats::gnuplotString(baselineTitle) << " "
-      << stats::seriesColour(0) << ", $z using 3 title "
-      << stats::gnuplotString(effectKept ? "with " + out.effect : "(no effect kept)") << " "
-      << stats::seriesColour(1) << "\n";
+      << plot::legendBelowPlot(2) << "plot $z using 2 title " << plot::gnuplotString(baselineTitle) << " "
+      << plot::seriesColour(0) << ", $z using 3 title "
+      << plot::gnuplotString(effectKept ? "with " + out.effect : "(no effect kept)") << " "
+      << plot::seriesColour(1) << "\n";
     // Wider for the stacked features of several conditions.
-    stats::renderPng(g.str(), dir / "residuals.png", 900 + 60 * std::max(0, static_cast<int>(obs_.size()) - 6),
+    plot::renderPng(g.str(), dir / "residuals.png", 900 + 60 * std::max(0, static_cast<int>(obs_.size()) - 6),
                     600);
 }
 
@@ -272,20 +272,20 @@ void Analysis::drawCurvePlot(std::size_t k, const Fit& baseline, const RunsPerCo
                      1e-3 * before[static_cast<std::size_t>(i)],
                      1e-3 * withEffect[static_cast<std::size_t>(i)]});
     std::ostringstream p;
-    p << stats::gnuplotDataBlock("c", c) << "set title "
-      << stats::gnuplotString("Mean force-displacement curves, held-out specimens (aligned at contact onset)" +
+    p << plot::gnuplotDataBlock("c", c) << "set title "
+      << plot::gnuplotString("Mean force-displacement curves, held-out specimens (aligned at contact onset)" +
                              (several() ? ", condition " + conditionName(k) : std::string()))
       << "\nset xlabel \"displacement from contact onset [mm]\"\nset ylabel \"force [kN]\"\nset "
          "grid\n"
-      << stats::legendBelowPlot(3) << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
-      << "$c using 1:3 with lines lw 2 " << stats::seriesColour(0) << " title "
-      << stats::gnuplotString(effectKept ? baselineTitle : baselineTitle + "; no effect kept");
+      << plot::legendBelowPlot(3) << "plot $c using 1:2 with lines lw 3 lc rgb \"black\" title \"measured\", "
+      << "$c using 1:3 with lines lw 2 " << plot::seriesColour(0) << " title "
+      << plot::gnuplotString(effectKept ? baselineTitle : baselineTitle + "; no effect kept");
     // Without a kept effect the third curve would be the baseline's again, drawn over it.
     if (effectKept)
-        p << ", $c using 1:4 with lines lw 2 " << stats::seriesColour(1) << " title "
-          << stats::gnuplotString("with " + out.effect);
+        p << ", $c using 1:4 with lines lw 2 " << plot::seriesColour(1) << " title "
+          << plot::gnuplotString("with " + out.effect);
     p << "\n";
-    stats::renderPng(p.str(), dir / (several() ? "curves-" + conditionName(k) + ".png" : "curves.png"), 900,
+    plot::renderPng(p.str(), dir / (several() ? "curves-" + conditionName(k) + ".png" : "curves.png"), 900,
                     650);
 }
 
