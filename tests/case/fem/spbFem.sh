@@ -31,7 +31,6 @@ thresholdSeed="${12:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
-rm -f rocks && cp -L "$src/tutorials/SPB/${rockType}FEM/rocks" rocks  # a relative link in the tutorial
 rocks="${5:-$(caseDict -case . rocks -keywords)}"
 noFailure=""
 printf '# rock [-]\tfailureLoad [N]\tmeasured [N]\tratio [-]\n' > "$work/results.dat"
