@@ -5,6 +5,7 @@
 
 #include "boxMeshes.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
 #include "demBackend.hpp"
@@ -26,23 +27,37 @@ VoronoiMesh oneBondMesh()
     return mesh;
 }
 
-DemParameters quietParameters()
+// The paper's law with G_I = G_II = 100 N/m (d_f > d_e0, see theory-dem.md).
+VoronoiQnscBondLaw::Parameters quietQnsc()
+{
+    VoronoiQnscBondLaw::Parameters q;
+    q.fracture_energy_I = q.fracture_energy_II = 100.0;
+    return q;
+}
+
+DemParameters quietParameters(const VoronoiQnscBondLaw::Parameters& q = quietQnsc())
 {
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
     p.bond_damping = 0.0;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 100.0;  // d_f > d_e0 (see theory-dem.md)
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     return p;
+}
+
+// The coefficients of the case's voronoiQNSC law.
+const VoronoiQnscBondLaw::Parameters& qnscOf(const DemParameters& p)
+{
+    return dynamic_cast<const VoronoiQnscBondLaw&>(*p.bond_law).parameters();
 }
 
 double normalModulus(const DemParameters& p)
 {
-    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
+    const double E = qnscOf(p).youngs_modulus, nu = qnscOf(p).poisson_ratio;
     return E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
 }
 double shearModulus(const DemParameters& p)
 {
-    return p.bond_youngs_modulus / (2.0 * (1.0 + p.bond_poisson_ratio));
+    return qnscOf(p).youngs_modulus / (2.0 * (1.0 + qnscOf(p).poisson_ratio));
 }
 
 // Cell 1 displaced by d from its place (cell 0 fixed), forces evaluated; returns the force on cell 0.
@@ -66,8 +81,8 @@ struct ImposedBond {
 
 double qnsc(const DemParameters& p, double sigma, double tau)
 {
-    const double tensile = std::max(sigma, 0.0) / p.bond_tensile_strength;
-    const double shear = tau / (p.bond_cohesion - p.bond_friction * sigma);
+    const double tensile = std::max(sigma, 0.0) / qnscOf(p).tensile_strength;
+    const double shear = tau / (qnscOf(p).cohesion - qnscOf(p).friction * sigma);
     return tensile * tensile + shear * shear;
 }
 
@@ -78,8 +93,8 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;             // d_e0
-    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;  // d_f
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;             // d_e0
+    const double rupture = 2.0 * qnscOf(p).fracture_energy_I / qnscOf(p).tensile_strength;  // d_f
     REQUIRE(rupture > onset);
     const int n_increments = 4000;
     const double last = 1.2 * rupture;
@@ -92,13 +107,13 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
         peak = std::max(peak, force);
         // The analytic law: elastic, then linear softening to zero at d_f.
         const double expected = opening <= onset    ? kn * opening / reference_length * bond_area
-                                : opening < rupture ? p.bond_tensile_strength * bond_area *
+                                : opening < rupture ? qnscOf(p).tensile_strength * bond_area *
                                                           (rupture - opening) / (rupture - onset)
                                                     : 0.0;
-        REQUIRE(force == Approx(expected).margin(1e-9 * p.bond_tensile_strength * bond_area));
+        REQUIRE(force == Approx(expected).margin(1e-9 * qnscOf(p).tensile_strength * bond_area));
     }
-    const double separation_energy = p.fracture_energy_mode_I * bond_area;
-    CHECK(peak == Approx(p.bond_tensile_strength * bond_area).epsilon(1e-3));
+    const double separation_energy = qnscOf(p).fracture_energy_I * bond_area;
+    CHECK(peak == Approx(qnscOf(p).tensile_strength * bond_area).epsilon(1e-3));
     CHECK(work == Approx(separation_energy).epsilon(0.01));
     CHECK(bond.model.energies().fracture == Approx(separation_energy).epsilon(0.01));
     CHECK(bond.bonds().stage[0] == bondBroken);
@@ -120,7 +135,7 @@ TEST_CASE("bond size effect: an interface of area A opens at sigma-bar (A_ref/A)
     for (const Vec3 direction : {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}}) {
         // Opening (tension, onset at sigma-bar) or sliding (pure shear, onset at C).
         const bool tension = direction.x > 0.0;
-        const double expected = factor * (tension ? p.bond_tensile_strength : p.bond_cohesion);
+        const double expected = factor * (tension ? qnscOf(p).tensile_strength : qnscOf(p).cohesion);
         const double step = 1e-4 * expected * reference_length / (tension ? kn : kt);
         ImposedBond bond(p);
         REQUIRE(bond.model.interfaces().strength_scale.size() == 1);
@@ -151,7 +166,7 @@ TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the s
     for (double sigma : {0.0, -10e6, -40e6, -80e6}) {
         ImposedBond bond(p);
         const double normal_opening = sigma * reference_length / kn;
-        const double expected = p.bond_cohesion - p.bond_friction * sigma;
+        const double expected = qnscOf(p).cohesion - qnscOf(p).friction * sigma;
         const double step = 1e-4 * expected * reference_length / kt;
         double shear = 0.0;
         while (bond.bonds().stage[0] == bondElastic && shear < 2.0 * expected * reference_length / kt) {
@@ -168,10 +183,11 @@ TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the s
 
 TEST_CASE("mixed-mode onset lies on the QNSC ellipse; G_f from Benzeggagh-Kenane", "[dem][bond]")
 {
-    DemParameters p = quietParameters();
-    p.fracture_energy_mode_I = 100.0;
-    p.fracture_energy_mode_II = 300.0;
-    p.bk_exponent = 2.0;
+    VoronoiQnscBondLaw::Parameters q = quietQnsc();
+    q.fracture_energy_I = 100.0;
+    q.fracture_energy_II = 300.0;
+    q.bk_exponent = 2.0;
+    const DemParameters p = quietParameters(q);
     const double kn = normalModulus(p), kt = shearModulus(p);
     for (double angle_degrees : {10.0, 30.0, 45.0, 60.0, 80.0}) {
         ImposedBond bond(p);
@@ -192,8 +208,8 @@ TEST_CASE("mixed-mode onset lies on the QNSC ellipse; G_f from Benzeggagh-Kenane
         CHECK(bond.bonds().onset_stress[0] == Approx(std::hypot(sigma0, tau0)).epsilon(1e-9));
         const double mixity = tau0 * tau0 / (sigma0 * sigma0 + tau0 * tau0);
         const double fracture_energy =
-            p.fracture_energy_mode_I +
-            (p.fracture_energy_mode_II - p.fracture_energy_mode_I) * mixity * mixity;
+            qnscOf(p).fracture_energy_I +
+            (qnscOf(p).fracture_energy_II - qnscOf(p).fracture_energy_I) * mixity * mixity;
         CHECK(bond.bonds().rupture_displacement[0] ==
               Approx(2.0 * fracture_energy / bond.bonds().onset_stress[0]).epsilon(1e-12));
     }
@@ -204,7 +220,7 @@ TEST_CASE("compression never damages a bond", "[dem][bond]")
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;
     for (int i = 1; i <= 100; ++i) {
         const double opening = -50.0 * onset * i / 100.0;
         const double force = bond.forceAt({opening, 0.0, 0.0}).x;
@@ -219,8 +235,8 @@ TEST_CASE("damage never decreases on unloading and reloading", "[dem][bond]")
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;
-    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;
+    const double rupture = 2.0 * qnscOf(p).fracture_energy_I / qnscOf(p).tensile_strength;
     const double peak_opening = onset + 0.5 * (rupture - onset);
     for (int i = 1; i <= 200; ++i) bond.forceAt({peak_opening * i / 200.0, 0.0, 0.0});
     const double damage = bond.bonds().damage[0];
@@ -278,19 +294,20 @@ TEST_CASE("bond damping: beta k eps-dot A/n (absolute) and 2 zeta sqrt(m*/k) (cr
 
 TEST_CASE("unknown law names are user errors listing the known ones", "[dem][registry]")
 {
-    DemParameters p = quietParameters();
-    p.bond_law = "timoshenkoBeam";
-    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("voronoiQNSC"));
-    p = quietParameters();
-    p.contact_law = "linearSpring";
-    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("hertzMindlin"));
+    const Dictionary empty("bond", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().make("timoshenkoBeam", empty),
+                      Catch::Contains("voronoiQNSC") && Catch::Contains("brittleBPM"));
+    CHECK_THROWS_WITH(contactLaws().make("linearSpring", empty), Catch::Contains("hertzMindlin"));
     CHECK_THROWS_AS(dampingReadingFromName("seconds"), UserError);
+    DemParameters p = quietParameters();
+    p.bond_law = nullptr;
+    CHECK_THROWS_AS(DemModel(oneBondMesh(), p), UserError);
 }
 
 TEST_CASE("a bond broken in shear under compression books its compressive energy as fracture",
           "[dem][bond][energy]")
 {
-    BondMaterial m;
+    VoronoiQnscLaw::Coefficients m;
     m.normal_modulus = 55e9;
     m.shear_modulus = 18e9;
     m.tensile_strength = 28e6;
