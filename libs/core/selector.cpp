@@ -4,7 +4,8 @@
 
 namespace rockfrac {
 
-void requireKnownEntries(const Dictionary& dict, const std::vector<std::string>& known, const std::string& hint)
+void requireKnownEntries(const Dictionary& dict, const std::vector<std::string>& known,
+                         const std::string& hint)
 {
     for (const Entry& e : dict.entries()) {
         if (std::find(known.begin(), known.end(), e.keyword) != known.end()) continue;

@@ -37,7 +37,8 @@ public:
         bool coefficientsOptional = false;
     };
 
-    Selector(std::string family, std::vector<Model> models) : family_(std::move(family)), models_(std::move(models))
+    Selector(std::string family, std::vector<Model> models)
+        : family_(std::move(family)), models_(std::move(models))
     {
     }
 

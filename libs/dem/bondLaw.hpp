@@ -64,21 +64,23 @@ struct BondOutput {
 // the stiffness-proportional dashpot of Eqs. 18–19 from the anchor points' relative velocity
 // (it always opposes the relative motion, docs/theory-dem.md): force, strain energy and
 // dashpot power into out. Every law's intact bond is this one (damage 0).
-RF_HD inline void elasticBondResponse(double normal_modulus, double shear_modulus, const BondInput& in, double l,
-                                      double inverse_l, double normal_opening, const Vec3& shear_opening,
-                                      double sigma_trial, double damage, BondOutput& out)
+RF_HD inline void elasticBondResponse(double normal_modulus, double shear_modulus, const BondInput& in,
+                                      double l, double inverse_l, double normal_opening,
+                                      const Vec3& shear_opening, double sigma_trial, double damage,
+                                      BondOutput& out)
 {
     const double intact = 1.0 - damage;
     const double sigma = normal_opening < 0.0 ? sigma_trial : intact * sigma_trial;
     const Vec3 shear_stress = (intact * shear_modulus * inverse_l) * shear_opening;  // tau t
-    const double normal_rate = dot(in.relative_velocity, in.normal) * inverse_l;      // eps-dot
-    const Vec3 shear_rate = (in.relative_velocity - (normal_rate * l) * in.normal) * inverse_l;  // gamma-dot t
+    const double normal_rate = dot(in.relative_velocity, in.normal) * inverse_l;     // eps-dot
+    const Vec3 shear_rate =
+        (in.relative_velocity - (normal_rate * l) * in.normal) * inverse_l;  // gamma-dot t
     const double beta = in.damping_beta;
-    out.force_on_i = in.bond_area * ((sigma + beta * normal_modulus * normal_rate) * in.normal + shear_stress +
-                                     (beta * shear_modulus) * shear_rate);
+    out.force_on_i = in.bond_area * ((sigma + beta * normal_modulus * normal_rate) * in.normal +
+                                     shear_stress + (beta * shear_modulus) * shear_rate);
     out.strain_energy = 0.5 * in.bond_area * (sigma * normal_opening + dot(shear_stress, shear_opening));
-    out.damping_power =
-        in.bond_area * beta * l * (normal_modulus * normal_rate * normal_rate + shear_modulus * norm2(shear_rate));
+    out.damping_power = in.bond_area * beta * l *
+                        (normal_modulus * normal_rate * normal_rate + shear_modulus * norm2(shear_rate));
 }
 
 // Sums over a block of interfaces, reduced in block order (deterministic).
@@ -176,8 +178,8 @@ RF_HD inline BondSoftening softeningOf(const BondHistory& h)
 // without a softening slot reaches its onset: the caller claims the slot and calls
 // again with the same state, which gives the same evaluation, now stored.
 template <class Law>
-RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename Law::Coefficients& coefficients, int k,
-                                      BondBlockSums& block)
+RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename Law::Coefficients& coefficients,
+                                      int k, BondBlockSums& block)
 {
     const int ci = a.cell_i[k], cj = a.cell_j[k];
     // The two cells' state as local copies: the history stores below go through

@@ -68,8 +68,9 @@ void BrittleBpmBondLaw::run(const BondKernelArgs& args) const
 std::string BrittleBpmBondLaw::describe() const
 {
     char line[256];
-    std::snprintf(line, sizeof line, "%s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g (no softening)",
-                  type(), 1e-9 * parameters_.youngs_modulus, 1e-6 * parameters_.tensile_strength,
+    std::snprintf(line, sizeof line,
+                  "%s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g (no softening)", type(),
+                  1e-9 * parameters_.youngs_modulus, 1e-6 * parameters_.tensile_strength,
                   1e-6 * parameters_.cohesion, parameters_.friction);
     return line;
 }

@@ -42,7 +42,8 @@ struct BrittleBpmLaw {
         return tau2 >= shear_strength * shear_strength;
     }
 
-    RF_HD RF_FORCE_INLINE static BondOutput evaluate(const Coefficients& m, const BondInput& in, BondHistory& h)
+    RF_HD RF_FORCE_INLINE static BondOutput evaluate(const Coefficients& m, const BondInput& in,
+                                                     BondHistory& h)
     {
         BondOutput out;
         if (h.stage == bondBroken) return out;
@@ -61,13 +62,13 @@ struct BrittleBpmLaw {
             h.rupture_displacement = h.max_displacement = h.onset_displacement;
             h.damage = 1.0;
             h.stage = bondBroken;
-            out.fracture_dissipation = 0.5 * in.bond_area * inverse_l *
-                                       (m.normal_modulus * normal_opening * normal_opening +
-                                        m.shear_modulus * shear_opening2);
+            out.fracture_dissipation =
+                0.5 * in.bond_area * inverse_l *
+                (m.normal_modulus * normal_opening * normal_opening + m.shear_modulus * shear_opening2);
             return out;
         }
-        elasticBondResponse(m.normal_modulus, m.shear_modulus, in, l, inverse_l, normal_opening, shear_opening, sigma,
-                            0.0, out);
+        elasticBondResponse(m.normal_modulus, m.shear_modulus, in, l, inverse_l, normal_opening,
+                            shear_opening, sigma, 0.0, out);
         return out;
     }
 };

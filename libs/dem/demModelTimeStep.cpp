@@ -41,8 +41,8 @@ struct BondSystem {
                     rotation[j] * cells.anchor_nodes[cells.anchor_node_offset[j] + bonds.node_j[b]];
                 const Vec3 d = (u[j] + cross(theta[j], rj)) - (u[i] + cross(theta[i], ri));
                 const double dn = dot(d, normal);
-                const Vec3 f = scale * (normal_modulus * dn * normal +
-                                        shear_modulus * (d - dn * normal));  // K_b d
+                const Vec3 f =
+                    scale * (normal_modulus * dn * normal + shear_modulus * (d - dn * normal));  // K_b d
                 fu[j] += f;
                 ftheta[j] += cross(rj, f);
                 fu[i] -= f;

@@ -38,8 +38,8 @@ VoronoiQnscBondLaw::Parameters VoronoiQnscBondLaw::read(const Dictionary& d)
 {
     static const Dimensions pascal = Dimensions::fromUnits("Pa");
     static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
-    requireKnownEntries(d, {"E", "poissonRatio", "tensileStrength", "cohesion", "frictionCoefficient", "GI", "GII",
-                            "bkExponent"});
+    requireKnownEntries(d, {"E", "poissonRatio", "tensileStrength", "cohesion", "frictionCoefficient", "GI",
+                            "GII", "bkExponent"});
     Parameters p;
     p.youngs_modulus = d.getScalar("E", Bounds::positive(), &pascal);
     p.poisson_ratio = d.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
@@ -81,8 +81,8 @@ void VoronoiQnscBondLaw::run(const BondKernelArgs& args) const
 std::string VoronoiQnscBondLaw::describe() const
 {
     char line[256];
-    std::snprintf(line, sizeof line, "%s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m",
-                  type(),
+    std::snprintf(line, sizeof line,
+                  "%s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m", type(),
                   1e-9 * parameters_.youngs_modulus, 1e-6 * parameters_.tensile_strength,
                   1e-6 * parameters_.cohesion, parameters_.friction, parameters_.fracture_energy_I);
     return line;

@@ -146,8 +146,8 @@ struct VoronoiQnscLaw {
             }
         }
         // Degraded stresses (Eqs. 16–17) and the dashpot (Eqs. 18–19).
-        elasticBondResponse(m.normal_modulus, m.shear_modulus, in, l, inverse_l, normal_opening, shear_opening,
-                            sigma_trial, h.damage, out);
+        elasticBondResponse(m.normal_modulus, m.shear_modulus, in, l, inverse_l, normal_opening,
+                            shear_opening, sigma_trial, h.damage, out);
         return out;
     }
 };

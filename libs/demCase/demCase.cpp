@@ -16,7 +16,8 @@ namespace {
 
 // The names of a family's models followed by `others`: the entries a dictionary selecting
 // one of them may hold (each model's coefficients in its own sub-dictionary).
-std::vector<std::string> withModelNames(std::vector<std::string> others, const std::vector<std::string>& models)
+std::vector<std::string> withModelNames(std::vector<std::string> others,
+                                        const std::vector<std::string>& models)
 {
     others.insert(others.end(), models.begin(), models.end());
     return others;

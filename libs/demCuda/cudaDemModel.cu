@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "dem/cellKernels.hpp"
 #include "dem/brittleBpmBond.hpp"
+#include "dem/cellKernels.hpp"
 #include "dem/hertzMindlinContact.hpp"
 #include "dem/voronoiQnscBond.hpp"
 #include "demCuda/cudaDemModel.hpp"
@@ -319,7 +319,8 @@ __global__ void __launch_bounds__(threads_per_block)
 
 // The laws with a CUDA kernel (the CPU tables: bondLawTable.cpp, contactLawTable.cpp): the
 // bond laws by keyword, each launched with the coefficients its host model owns.
-using BondLaunch = void (*)(const BondLawModel& law, const BondKernelArgs& args, int blocks, BondSums* partials);
+using BondLaunch = void (*)(const BondLawModel& law, const BondKernelArgs& args, int blocks,
+                            BondSums* partials);
 
 template <class Law, class Model>
 void launchBonds(const BondLawModel& law, const BondKernelArgs& args, int blocks, BondSums* partials)
@@ -521,13 +522,15 @@ CudaDemModel::CudaDemModel(DemModel& host) : host_(host)
     if (info.devices == 0) throw UserError("CUDA backend: " + info.status);
     if (!deviceBondLaw(*host_.parameters().bond_law)) {
         std::string known;
-        for (const auto& entry : device_bond_laws) known += std::string(known.empty() ? "" : ", ") + entry.first;
+        for (const auto& entry : device_bond_laws)
+            known += std::string(known.empty() ? "" : ", ") + entry.first;
         throw UserError(std::string("CUDA backend: the bond law '") + host_.parameters().bond_law->type() +
                         "' has no CUDA kernel (only " + known + ")");
     }
     if (std::string(host_.parameters().contact_law->type()) != contact_law_on_device)
-        throw UserError(std::string("CUDA backend: the contact law '") + host_.parameters().contact_law->type() +
-                        "' has no CUDA kernel (only " + contact_law_on_device + ")");
+        throw UserError(std::string("CUDA backend: the contact law '") +
+                        host_.parameters().contact_law->type() + "' has no CUDA kernel (only " +
+                        contact_law_on_device + ")");
     device_ = std::make_unique<Buffers>();
     device_->device_name = info.status;
     upload();
@@ -795,7 +798,8 @@ void CudaDemModel::computeForces(double dt)
     ba.softening = d.softening.data();
     const int bond_blocks = blocksFor(ba.n_interfaces);
     if (bond_blocks > 0)
-        deviceBondLaw(*h.parameters().bond_law)(*h.parameters().bond_law, ba, bond_blocks, d.bond_sums.data());
+        deviceBondLaw (*h.parameters().bond_law)(*h.parameters().bond_law, ba, bond_blocks,
+                                                 d.bond_sums.data());
     check(cudaGetLastError(), "bond kernel");
     double strain = 0.0;
     int broken = 0, open = 0, cracked = 0;

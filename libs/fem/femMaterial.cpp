@@ -31,10 +31,11 @@ std::unique_ptr<FemMaterialModel> make(const Dictionary& coefficients)
 // One line per model.
 const Selector<FemMaterialModel>& femMaterials()
 {
-    static const Selector<FemMaterialModel> table("FEM material", {
-                                                                      {"linearElastic", &make<LinearElasticMaterial>, true},
-                                                                      {"kstDfh", &make<KstDfhMaterial>},
-                                                                  });
+    static const Selector<FemMaterialModel> table("FEM material",
+                                                  {
+                                                      {"linearElastic", &make<LinearElasticMaterial>, true},
+                                                      {"kstDfh", &make<KstDfhMaterial>},
+                                                  });
     return table;
 }
 

@@ -82,7 +82,8 @@ template <class Material>
 class FemMaterialModelOf final : public FemMaterialModel {
 public:
     using Coefficients = typename Material::Coefficients;
-    explicit FemMaterialModelOf(const Coefficients& coefficients = Coefficients{}) : coefficients_(coefficients)
+    explicit FemMaterialModelOf(const Coefficients& coefficients = Coefficients{})
+        : coefficients_(coefficients)
     {
         Material::check(coefficients_);
     }

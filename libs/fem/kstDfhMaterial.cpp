@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <limits>
+#include <sstream>
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
@@ -94,10 +94,11 @@ std::string KstDfhMaterial::describe(const Coefficients& m)
 {
     char buffer[512];
     std::string text;
-    std::snprintf(buffer, sizeof buffer,
-                  "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
-                  m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus,
-                  1e-6 * m.weibullStress, 1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
+    std::snprintf(
+        buffer, sizeof buffer,
+        "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
+        m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus, 1e-6 * m.weibullStress,
+        1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
     text = buffer;
     if (m.damageEnabled) {
         if (m.fractureEnergy > 0.0) {

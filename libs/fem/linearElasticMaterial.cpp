@@ -7,7 +7,9 @@ namespace rockfrac::fem {
 
 LinearElasticMaterial::Coefficients LinearElasticMaterial::read(const Dictionary& coefficients)
 {
-    requireKnownEntries(coefficients, {}, "linearElastic has no coefficients of its own: rock { } holds E, poissonRatio, density");
+    requireKnownEntries(
+        coefficients, {},
+        "linearElastic has no coefficients of its own: rock { } holds E, poissonRatio, density");
     return {};
 }
 

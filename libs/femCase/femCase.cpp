@@ -30,9 +30,10 @@ FemParameters readFemParameters(const Dictionary& d)
     p.rock.density = rock.getScalar("density", Bounds::positive(), &density);
     for (const char* moved : {"kst", "dfh"})
         if (d.found(moved))
-            throw UserError(d.location(moved).str() + ": '" + moved +
-                            "' belongs in the material's own sub-dictionary: kstDfh { kst { ... } dfh { ... } } "
-                            "(docs/models/fem/kstDfh.md)");
+            throw UserError(
+                d.location(moved).str() + ": '" + moved +
+                "' belongs in the material's own sub-dictionary: kstDfh { kst { ... } dfh { ... } } "
+                "(docs/models/fem/kstDfh.md)");
     p.material = femMaterials().select(d, "material");  // the model reads its own sub-dictionary
     return p;
 }

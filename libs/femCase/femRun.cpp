@@ -572,8 +572,9 @@ void FeFractureRun::printSetup() const
                 r.mesh.numTets(), r.mesh.numNodes(), r.model->contactNodes().size(),
                 1e3 * (r.bounds.hi.x - r.bounds.lo.x), 1e3 * (r.bounds.hi.y - r.bounds.lo.y),
                 1e3 * (r.bounds.hi.z - r.bounds.lo.z));
-    std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3%s\n", r.parameters.material->type().c_str(),
-                1e-9 * m.youngsModulus, m.poissonRatio, m.density, r.parameters.material->describe().c_str());
+    std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3%s\n",
+                r.parameters.material->type().c_str(), 1e-9 * m.youngsModulus, m.poissonRatio, m.density,
+                r.parameters.material->describe().c_str());
     std::printf(
         "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
         "added mass %.3g %%; mass damping %.4g 1/s\n",

@@ -121,6 +121,23 @@ SETUP
 badCase emptyRockProperties dem "rockProperties" "" bondedDemFoam -case . <<'SETUP'
 : > constant/rockProperties
 SETUP
+badCase bondLawEntryTypo dem "rockProperties" "unknown entry 'tensileStrenght'" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/voronoiQNSC/tensileStrenght -add 28e6
+SETUP
+badCase bondLawOldLayout dem "rockProperties" "its own sub-dictionary" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/tensileStrength -add 28e6
+SETUP
+badCase bondLawNoCoefficients dem "rockProperties" "brittleBPM" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/model -set brittleBPM
+caseDict -case . constant/rockProperties -entry bond/brittleBPM -remove
+SETUP
+badCase brittleWithFractureEnergy dem "rockProperties" "unknown entry 'GI'" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/model -set brittleBPM
+caseDict -case . constant/rockProperties -entry bond/brittleBPM/GI -add 10
+SETUP
+badCase contactLawCoefficients dem "rockProperties" "no coefficients of its own" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry contact/hertzMindlin/stiffness -add 1
+SETUP
 badCase platesAtRest dem "loading" "stop criterion can never be met" bondedDemFoam -case . <<'SETUP'
 caseDict -case . constant/loading -entry plates/upper/velocity -set "(0 0 0)"
 SETUP
@@ -204,6 +221,12 @@ caseDict -case . constant/rockProperties -entry material -set kstDFH
 SETUP
 badCase weibullModulusZero fem "rockProperties" "weibullModulus" feFractureSolver -case . <<'SETUP'
 caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibullModulus -set 0
+SETUP
+badCase femOldLayout fem "rockProperties" "kstDfh { kst { ... } dfh { ... } }" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry dfh/seed -add 1
+SETUP
+badCase femCoefficientTypo fem "rockProperties" "unknown entry 'weibulModulus'" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibulModulus -add 7
 SETUP
 badCase plateNeverTouches fem "loading" "never touches the specimen" feFractureSolver -case . <<'SETUP'
 caseDict -case . constant/loading -entry plates/startGap -set 1

@@ -7,17 +7,23 @@ mkdir -p "$work/study/system" "$work/study/fem/constant"
 cd "$work/study"
 cat > fem/constant/rockProperties <<'DICT'
 FoamFile { format ascii; class dictionary; object rockProperties; }
-dfh
+kstDfh
 {
-    weibullModulus  5;
-    weibullStress   [1 -1 -2 0 0 0 0] 30e6;
-    seed            1;
+    dfh
+    {
+        weibullModulus  5;
+        weibullStress   [1 -1 -2 0 0 0 0] 30e6;
+        seed            1;
+    }
 }
 bond
 {
-    E               [1 -1 -2 0 0 0 0] 46e9;
-    tensileStrength [1 -1 -2 0 0 0 0] 28e6;
-    cohesion        [1 -1 -2 0 0 0 0] 42e6;
+    voronoiQNSC
+    {
+        E               [1 -1 -2 0 0 0 0] 46e9;
+        tensileStrength [1 -1 -2 0 0 0 0] 28e6;
+        cohesion        [1 -1 -2 0 0 0 0] 42e6;
+    }
 }
 DICT
 cp "$src/cases/experiments/BDT/granite/measurements" measurements

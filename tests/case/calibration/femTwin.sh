@@ -10,12 +10,15 @@ mkdir -p "$work/study/system" "$work/study/fem/constant"
 cd "$work/study"
 cat > fem/constant/rockProperties <<'DICT'
 FoamFile { format ascii; class dictionary; object rockProperties; }
-dfh
+kstDfh
 {
-    weibullModulus  5;
-    weibullStress   [1 -1 -2 0 0 0 0] 30e6;
-    referenceVolume [0 3 0 0 0 0 0] 2e-8;
-    seed            1;
+    dfh
+    {
+        weibullModulus  5;
+        weibullStress   [1 -1 -2 0 0 0 0] 30e6;
+        referenceVolume [0 3 0 0 0 0 0] 2e-8;
+        seed            1;
+    }
 }
 DICT
 # The measurements: the stand-in at the truth, one run per seed.

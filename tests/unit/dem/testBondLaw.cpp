@@ -6,6 +6,7 @@
 #include "boxMeshes.hpp"
 #include "core/error.hpp"
 #include "core/selector.hpp"
+#include "dem/brittleBpmBond.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
 #include "demBackend.hpp"
@@ -93,7 +94,7 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = qnscOf(p).tensile_strength * reference_length / kn;             // d_e0
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;                // d_e0
     const double rupture = 2.0 * qnscOf(p).fracture_energy_I / qnscOf(p).tensile_strength;  // d_f
     REQUIRE(rupture > onset);
     const int n_increments = 4000;
@@ -335,4 +336,158 @@ TEST_CASE("a bond broken in shear under compression books its compressive energy
                      << compressive);
     CHECK(fracture > compressive);
     CHECK(fracture == Approx(strain_before).epsilon(0.02));
+}
+
+// ---- brittleBPM: the bonded-particle model's brittle bond ---------------------------
+
+namespace {
+
+DemParameters brittleParameters(const BrittleBpmBondLaw::Parameters& b = {})
+{
+    DemParameters p = quietParameters();
+    p.bond_law = std::make_shared<BrittleBpmBondLaw>(b);
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "brittleBPM under imposed opening: linear to sigma-bar A/n, then nothing; dissipates the stored energy",
+    "[dem][bond][brittle]")
+{
+    const BrittleBpmBondLaw::Parameters b;
+    const DemParameters p = brittleParameters(b);
+    ImposedBond bond(p);
+    const double kn = normalModulus(quietParameters());  // the same E and nu: the same k_n
+    REQUIRE(p.bond_law->normalModulus() == kn);
+    const double onset = b.tensile_strength * reference_length / kn;  // where sigma = sigma-bar
+    const int n = 2000;
+    const double last = 2.0 * onset;
+    double work = 0.0, previous = 0.0, peak = 0.0;
+    for (int i = 1; i <= n; ++i) {
+        const double opening = last * i / n;
+        const double force = bond.forceAt({opening, 0.0, 0.0}).x;
+        work += 0.5 * (force + previous) * (last / n);
+        previous = force;
+        peak = std::max(peak, force);
+        const double expected =
+            opening < onset * (1.0 - 1e-12) ? kn * opening / reference_length * bond_area : 0.0;
+        REQUIRE(force == Approx(expected).margin(1e-9 * b.tensile_strength * bond_area));
+    }
+    // The largest force is the last sample below the strength; the bond broke at the first at or above it.
+    CHECK(peak < b.tensile_strength * bond_area);
+    CHECK(peak >= (1.0 - 1.01 * 2.0 / n) * b.tensile_strength * bond_area);  // within one sample
+    const BondArrays bonds = bond.bonds();
+    CHECK(bonds.stage[0] == bondBroken);
+    CHECK(bonds.damage[0] == 1.0);
+    CHECK(bond.model.counters().bonds_broken == 1);
+    // Dissipated: the strain energy the bond held at the step it broke, 1/2 sigma^2 A l / k_n at that
+    // step's opening (one sample past sigma-bar), and the work of the sampled curve up to there.
+    const double broke_at = std::ceil(onset / (last / n) - 1e-9) * (last / n);
+    const double stored = 0.5 * kn * broke_at * broke_at / reference_length * bond_area;
+    CHECK(bond.model.energies().fracture == Approx(stored).epsilon(1e-9));
+    CHECK(bond.model.energies().fracture ==
+          Approx(0.5 * b.tensile_strength * b.tensile_strength * bond_area * reference_length / kn)
+              .epsilon(2.0 * 2.0 / n));
+    CHECK(work == Approx(0.5 * b.tensile_strength * b.tensile_strength * bond_area * reference_length / kn)
+                      .epsilon(2.0 * 2.0 / n));
+}
+
+TEST_CASE("brittleBPM fails in shear at tau-bar = C - mu sigma, compression raising it",
+          "[dem][bond][brittle]")
+{
+    const BrittleBpmBondLaw::Parameters b;
+    const DemParameters p = brittleParameters(b);
+    const double kn = p.bond_law->normalModulus(), kt = p.bond_law->shearModulus();
+    for (double sigma : {0.0, -10e6, -40e6}) {
+        ImposedBond bond(p);
+        const double normal_opening = sigma * reference_length / kn;
+        const double expected = b.cohesion - b.friction * sigma;
+        const double step = 1e-4 * expected * reference_length / kt;
+        double shear = 0.0;
+        while (bond.bonds().stage[0] == bondElastic && shear < 2.0 * expected * reference_length / kt) {
+            shear += step;
+            bond.forceAt({normal_opening, shear, 0.0});
+        }
+        INFO("sigma = " << sigma);
+        REQUIRE(bond.bonds().stage[0] == bondBroken);  // no softening stage: broken at once
+        CHECK(kt * (shear - step) / reference_length < expected);
+        CHECK(kt * shear / reference_length >= expected);
+        CHECK(bond.bonds().onset_stress[0] == Approx(expected).epsilon(2e-4));
+    }
+}
+
+TEST_CASE("brittleBPM tests tension and shear each on its own, where the QNSC ellipse has failed",
+          "[dem][bond][brittle]")
+{
+    BrittleBpmLaw::Coefficients m;
+    m.normal_modulus = 55e9;
+    m.shear_modulus = 18e9;
+    m.tensile_strength = 28e6;
+    m.cohesion = 42e6;
+    m.friction = 0.8;
+    const double sigma = 0.9 * m.tensile_strength;
+    const double tau = 0.9 * (m.cohesion - m.friction * sigma);
+    CHECK_FALSE(BrittleBpmLaw::fails(m, sigma, tau * tau));  // 0.81 + 0.81 > 1 on the QNSC ellipse
+    CHECK(BrittleBpmLaw::fails(m, m.tensile_strength, 0.0));
+    CHECK(BrittleBpmLaw::fails(m, 0.0, m.cohesion * m.cohesion));
+    CHECK(BrittleBpmLaw::fails(m, m.cohesion / m.friction, 0.0));  // C - mu sigma <= 0
+    CHECK_FALSE(BrittleBpmLaw::fails(
+        m, -1e9, 0.99 * 0.99 * (m.cohesion + m.friction * 1e9) * (m.cohesion + m.friction * 1e9)));
+    // The same state through the law: intact, force and energy of the elastic bond.
+    BondInput in;
+    in.normal = {1.0, 0.0, 0.0};
+    in.reference_length = reference_length;
+    in.bond_area = bond_area;
+    in.opening = {sigma * reference_length / m.normal_modulus, tau * reference_length / m.shear_modulus, 0.0};
+    BondHistory h;
+    const BondOutput out = BrittleBpmLaw::evaluate(m, in, h);
+    CHECK(h.stage == bondElastic);
+    CHECK(out.force_on_i.x == Approx(sigma * bond_area).epsilon(1e-12));
+    CHECK(out.force_on_i.y == Approx(tau * bond_area).epsilon(1e-12));
+    CHECK(out.fracture_dissipation == 0.0);
+    // Past the cut-off: broken, no force, and the strain energy it held dissipated.
+    in.opening.x *= 1.2;
+    const double stored =
+        0.5 * bond_area / reference_length *
+        (m.normal_modulus * in.opening.x * in.opening.x + m.shear_modulus * in.opening.y * in.opening.y);
+    const BondOutput broken = BrittleBpmLaw::evaluate(m, in, h);
+    CHECK(h.stage == bondBroken);
+    CHECK(h.damage == 1.0);
+    CHECK(norm(broken.force_on_i) == 0.0);
+    CHECK(broken.strain_energy == 0.0);
+    CHECK(broken.fracture_dissipation == Approx(stored).epsilon(1e-12));
+    CHECK(norm(BrittleBpmLaw::evaluate(m, in, h).force_on_i) == 0.0);  // and stays broken
+}
+
+TEST_CASE("bond laws are selected by keyword and read their own sub-dictionary", "[dem][registry]")
+{
+    const Dictionary bond = Dictionary::parse(R"(
+        model brittleBPM;
+        voronoiQNSC { E 46e9; poissonRatio 0.25; tensileStrength 28e6; cohesion 42e6;
+                      frictionCoefficient 0.8; GI 10; GII 10; }
+        brittleBPM  { E 40e9; poissonRatio 0.2; tensileStrength 20e6; cohesion 30e6; frictionCoefficient 0.5; }
+    )",
+                                              "rockProperties");
+    const std::shared_ptr<BondLawModel> law = bondLaws().select(bond, "model");
+    CHECK(std::string(law->type()) == "brittleBPM");
+    const auto& b = dynamic_cast<const BrittleBpmBondLaw&>(*law).parameters();
+    CHECK(b.youngs_modulus == 40e9);
+    CHECK(b.tensile_strength == 20e6);
+    CHECK(law->shearModulus() == Approx(40e9 / 2.4).epsilon(1e-15));
+    // An entry the law does not know is refused at its line, naming the known ones.
+    const Dictionary typo = Dictionary::parse(
+        "model brittleBPM;\nbrittleBPM { E 40e9; poissonRatio 0.2; tensileStrength 20e6; cohesion 30e6;\n"
+        "frictionCoefficient 0.5; GI 10; }\n",
+        "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(typo, "model"), Catch::Contains("rockProperties:3") &&
+                                                            Catch::Contains("unknown entry 'GI'") &&
+                                                            Catch::Contains("frictionCoefficient"));
+    // The law's sub-dictionary is required.
+    const Dictionary missing = Dictionary::parse("model voronoiQNSC;\n", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(missing, "model"), Catch::Contains("voronoiQNSC"));
+    // An unknown model: the line of the keyword, the known names.
+    const Dictionary unknown = Dictionary::parse("model beam;\n", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(unknown, "model"),
+                      Catch::Contains("rockProperties:1") && Catch::Contains("voronoiQNSC, brittleBPM"));
 }
