@@ -35,22 +35,6 @@ ContactConstants contactConstants(double E1, double nu1, double E2, double nu2, 
     return k;
 }
 
-BondMaterial bondMaterial(const DemParameters& p)
-{
-    BondMaterial m;
-    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
-    m.normal_modulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // Eq. 7
-    m.shear_modulus = E / (2.0 * (1.0 + nu));                             // Eq. 8
-    m.tensile_strength = p.bond_tensile_strength;
-    m.cohesion = p.bond_cohesion;
-    m.friction = p.bond_friction;
-    m.fracture_energy_I = p.fracture_energy_mode_I;
-    m.fracture_energy_II = p.fracture_energy_mode_II;
-    m.bk_exponent = p.bk_exponent;
-    m.rupture_tolerance = p.rupture_tolerance;
-    return m;
-}
-
 }  // namespace
 
 namespace demDetail {
@@ -130,9 +114,6 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
 void DemModel::setUpLaws()
 {
     parameters_.validate();
-    bond_runner_ = bondLawRunner(parameters_.bond_law);
-    contact_runners_ = contactLawRunners(parameters_.contact_law);
-    bond_material_ = bondMaterial(parameters_);
     rock_rock_ = contactConstants(parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
                                   parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
                                   parameters_.rock_rock_friction, parameters_.rock_rock_restitution);
@@ -360,7 +341,7 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         // bond (axial stiffness k = k_n A/(n l_ij) between the reduced mass m*):
         // c = 2 zeta sqrt(k m*) = beta_eff k  =>  beta_eff = 2 zeta sqrt(m*/k).
         const double l = head.lI + head.lJ;
-        const double stiffness = bond_material_.normal_modulus * head.area / l;
+        const double stiffness = parameters_.bond_law->normalModulus() * head.area / l;
         const double reduced_mass = cells_.mass[ci] * cells_.mass[cj] / (cells_.mass[ci] + cells_.mass[cj]);
         f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
                                      ? beta

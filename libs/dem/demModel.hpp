@@ -300,10 +300,7 @@ private:
     WallPose wallPose(const WallState& wall) const;
 
     DemParameters parameters_;
-    BondMaterial bond_material_;
     ContactConstants rock_rock_, rock_steel_;
-    BondLawRunner bond_runner_ = nullptr;
-    ContactLawRunners contact_runners_;
     double rayleigh_time_step_ = 0.0;
     double smallest_radius_ = 1e300;  // smallest volume-equivalent radius of any cell so far
     double skin_ = 0.0;

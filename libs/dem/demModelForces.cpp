@@ -22,7 +22,6 @@ void DemModel::refreshKinematicCaches()
 BondKernelArgs DemModel::bondArgs()
 {
     BondKernelArgs a;
-    a.material = bond_material_;
     a.n_interfaces = interfaces_.size();
     a.position = cells_.position.data();
     a.velocity = cells_.velocity.data();
@@ -75,7 +74,7 @@ CellContactView DemModel::cellView() const
 
 void DemModel::runBondKernel(double dt)
 {
-    bond_runner_(bondArgs());
+    parameters_.bond_law->run(bondArgs());
     // Interfaces whose first onset found no softening slot: claimed in interface order
     // (deterministic whatever the thread count), then evaluated again, now stored.
     int pending = 0;
@@ -90,7 +89,7 @@ void DemModel::runBondKernel(double dt)
         BondKernelArgs again = bondArgs();
         again.only_interfaces = onsets.data();
         again.n_only = static_cast<int>(onsets.size());
-        bond_runner_(again);
+        parameters_.bond_law->run(again);
     }
     double strain = 0.0;
     force_rates_.bond_damping = 0.0;
@@ -173,7 +172,7 @@ void DemModel::runContactKernels(double dt)
     pa.patch = parameters_.cell_contact_patch;
     pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
     pa.block_sums = pair_block_sums_.data();
-    contact_runners_.pairs(pa);
+    parameters_.contact_law->runPairs(pa);
 
     WallKernelArgs wa;
     wa.constants = rock_steel_;
@@ -191,7 +190,7 @@ void DemModel::runContactKernels(double dt)
     wa.force_on_cell = wall_items_.force_on_cell.data();
     wa.torque_on_cell = wall_items_.torque_on_cell.data();
     wa.wall_power = wall_items_.wall_power.data();
-    contact_runners_.walls(wa);
+    parameters_.contact_law->runWalls(wa);
 
     energies_.contact_elastic = 0.0;
     counters_.core_intersections = 0;

@@ -315,13 +315,8 @@ void BondedDemRun::printSetup() const
     for (int c = 0; c < cells.size(); ++c) mass += cells.mass[c];
     std::printf("Mesh: %d cells, %d bonds, dilation radius %.4g mm, mass %.5g kg\n", r.mesh.nCells(),
                 r.mesh.nBonds(), 1e3 * r.mesh.dilationRadius, mass);
-    std::printf(
-        "Bonds: %s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m, damping %s "
-        "%.3g\n",
-        r.parameters.bond_law.c_str(), 1e-9 * r.parameters.bond_youngs_modulus,
-        1e-6 * r.parameters.bond_tensile_strength, 1e-6 * r.parameters.bond_cohesion,
-        r.parameters.bond_friction, r.parameters.fracture_energy_mode_I,
-        dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
+    std::printf("Bonds: %s, damping %s %.3g\n", r.parameters.bond_law->describe().c_str(),
+                dampingReadingName(r.parameters.damping_reading), r.parameters.bond_damping);
     printBondSizeEffect(r.model->interfaces(), r.parameters);
     std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n",
                 r.time.deltaT(), r.time.deltaT() / r.rayleighStep, r.rayleighStep, r.time.endTime(),

@@ -13,9 +13,11 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
+#include "dem/brittleBpmBond.hpp"
 #include "dem/cellKernels.hpp"
 #include "dem/hertzMindlinContact.hpp"
 #include "dem/voronoiQnscBond.hpp"
@@ -194,13 +196,14 @@ __global__ void __launch_bounds__(threads_per_block)
 }
 
 template <class Law>
-__global__ void __launch_bounds__(threads_per_block) bondKernel(BondKernelArgs a, BondSums* partials)
+__global__ void __launch_bounds__(threads_per_block)
+    bondKernel(BondKernelArgs a, typename Law::Coefficients coefficients, BondSums* partials)
 {
     const int k = blockIdx.x * blockDim.x + threadIdx.x;
     BondSums s{0.0, 0.0, 0.0, 0, 0, 0};
     if (k < a.n_interfaces) {
         BondBlockSums sums;
-        bondInterfaceKernel<Law>(a, k, sums);
+        bondInterfaceKernel<Law>(a, coefficients, k, sums);
         s.strain_energy = sums.strain_energy;
         s.damping_power = sums.damping_power;
         s.fracture_dissipation = sums.fracture_dissipation;
@@ -314,10 +317,31 @@ __global__ void __launch_bounds__(threads_per_block)
     blockSum(s, partials);
 }
 
-// The laws with a CUDA kernel (the CPU tables: bondLawTable.cpp, contactLawTable.cpp).
-using BondLawOnDevice = VoronoiQnscLaw;
+// The laws with a CUDA kernel (the CPU tables: bondLawTable.cpp, contactLawTable.cpp): the
+// bond laws by keyword, each launched with the coefficients its host model owns.
+using BondLaunch = void (*)(const BondLawModel& law, const BondKernelArgs& args, int blocks,
+                            BondSums* partials);
+
+template <class Law, class Model>
+void launchBonds(const BondLawModel& law, const BondKernelArgs& args, int blocks, BondSums* partials)
+{
+    const typename Law::Coefficients& coefficients = static_cast<const Model&>(law).coefficients();
+    bondKernel<Law><<<blocks, threads_per_block>>>(args, coefficients, partials);
+}
+
+const std::pair<const char*, BondLaunch> device_bond_laws[] = {
+    {"voronoiQNSC", &launchBonds<VoronoiQnscLaw, VoronoiQnscBondLaw>},
+    {"brittleBPM", &launchBonds<BrittleBpmLaw, BrittleBpmBondLaw>},
+};
+
+BondLaunch deviceBondLaw(const BondLawModel& law)
+{
+    for (const auto& entry : device_bond_laws)
+        if (std::string(law.type()) == entry.first) return entry.second;
+    return nullptr;
+}
+
 using ContactLawOnDevice = HertzMindlinLaw;
-constexpr const char* bond_law_on_device = "voronoiQNSC";
 constexpr const char* contact_law_on_device = "hertzMindlin";
 
 }  // namespace
@@ -496,12 +520,17 @@ CudaDemModel::CudaDemModel(DemModel& host) : host_(host)
 {
     const CudaBackendInfo info = cudaBackendInfo();
     if (info.devices == 0) throw UserError("CUDA backend: " + info.status);
-    if (host_.parameters_.bond_law != bond_law_on_device)
-        throw UserError("CUDA backend: the bond law '" + host_.parameters_.bond_law +
-                        "' has no CUDA kernel (only " + bond_law_on_device + ")");
-    if (host_.parameters_.contact_law != contact_law_on_device)
-        throw UserError("CUDA backend: the contact law '" + host_.parameters_.contact_law +
-                        "' has no CUDA kernel (only " + contact_law_on_device + ")");
+    if (!deviceBondLaw(*host_.parameters().bond_law)) {
+        std::string known;
+        for (const auto& entry : device_bond_laws)
+            known += std::string(known.empty() ? "" : ", ") + entry.first;
+        throw UserError(std::string("CUDA backend: the bond law '") + host_.parameters().bond_law->type() +
+                        "' has no CUDA kernel (only " + known + ")");
+    }
+    if (std::string(host_.parameters().contact_law->type()) != contact_law_on_device)
+        throw UserError(std::string("CUDA backend: the contact law '") +
+                        host_.parameters().contact_law->type() + "' has no CUDA kernel (only " +
+                        contact_law_on_device + ")");
     device_ = std::make_unique<Buffers>();
     device_->device_name = info.status;
     upload();
@@ -741,7 +770,6 @@ void CudaDemModel::computeForces(double dt)
 
     // Bonds.
     BondKernelArgs ba;
-    ba.material = h.bond_material_;
     ba.n_interfaces = h.interfaces_.size();
     ba.position = d.position.data();
     ba.velocity = d.velocity.data();
@@ -770,7 +798,8 @@ void CudaDemModel::computeForces(double dt)
     ba.softening = d.softening.data();
     const int bond_blocks = blocksFor(ba.n_interfaces);
     if (bond_blocks > 0)
-        bondKernel<BondLawOnDevice><<<bond_blocks, threads_per_block>>>(ba, d.bond_sums.data());
+        deviceBondLaw (*h.parameters().bond_law)(*h.parameters().bond_law, ba, bond_blocks,
+                                                 d.bond_sums.data());
     check(cudaGetLastError(), "bond kernel");
     double strain = 0.0;
     int broken = 0, open = 0, cracked = 0;
