@@ -6,6 +6,7 @@
 #include "dem/cellKernels.hpp"
 #include "dem/demModel.hpp"
 #include "dem/demModelDetail.hpp"
+#include "dem/kernelViews.hpp"
 
 namespace rockfrac {
 
@@ -13,18 +14,7 @@ using demDetail::cell_block_size;
 
 IntegrationArgs DemModel::integrationArgs()
 {
-    IntegrationArgs a;
-    a.gravity = parameters_.gravity;
-    a.mass = cells_.mass.data();
-    a.principal_inertia = cells_.principal_inertia.data();
-    a.force = cells_.force.data();
-    a.torque = cells_.torque.data();
-    a.rotation = rotation_.data();
-    a.position = cells_.position.data();
-    a.velocity = cells_.velocity.data();
-    a.orientation = cells_.orientation.data();
-    a.angular_velocity = cells_.angular_velocity.data();
-    return a;
+    return integrationView(cells_, rotation_, parameters_.gravity);
 }
 
 // First half kick, drift and rotation update (kickDriftCell), gravity's work summed per block.
