@@ -36,6 +36,25 @@ public:
     virtual std::string describe() const = 0;
 };
 
+// What every law's host class shares: its user-facing Parameters, the kernel's Coefficients
+// derived from them, and the moduli. run() is defined in the law's own .cpp (there the kernel is
+// compiled with OpenMP), which declares it below its class.
+template <class Law, class Parameters>
+class BondLawOf : public BondLawModel {
+public:
+    const Parameters& parameters() const { return parameters_; }
+    const typename Law::Coefficients& coefficients() const { return coefficients_; }
+    double normalModulus() const override { return coefficients_.normal_modulus; }
+    double shearModulus() const override { return coefficients_.shear_modulus; }
+    void run(const BondKernelArgs& args) const override;
+
+protected:
+    explicit BondLawOf(const Parameters& parameters) : parameters_(parameters) {}
+
+    Parameters parameters_;
+    typename Law::Coefficients coefficients_;
+};
+
 // The table of bond laws (bondLawTable.cpp): keyword -> law built from its coefficients.
 const Selector<BondLawModel>& bondLaws();
 std::vector<std::string> bondLawNames();

@@ -4,21 +4,16 @@
 
 #include "core/dictionary.hpp"
 #include "core/selector.hpp"
-#include "dem/bondLawChecks.hpp"
 
 namespace rockfrac {
 
 BrittleBpmBondLaw::BrittleBpmBondLaw() : BrittleBpmBondLaw(Parameters{}) {}
 
-BrittleBpmBondLaw::BrittleBpmBondLaw(const Parameters& p) : parameters_(p)
+BrittleBpmBondLaw::BrittleBpmBondLaw(const Parameters& p) : BondLawOf(p)
 {
-    requireElasticBond(p.youngs_modulus, p.poisson_ratio, type());
-    requireLawValue(p.tensile_strength > 0.0, p.tensile_strength, "tensile strength", type());
-    requireLawValue(p.cohesion > 0.0, p.cohesion, "cohesion", type());
-    requireLawValue(p.friction >= 0.0 && p.friction <= 1e3, p.friction, "friction coefficient", type());
-    const double E = p.youngs_modulus, nu = p.poisson_ratio;
-    coefficients_.normal_modulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // Eq. 7
-    coefficients_.shear_modulus = E / (2.0 * (1.0 + nu));                             // Eq. 8
+    p.check(type());
+    coefficients_.normal_modulus = p.normalModulus();
+    coefficients_.shear_modulus = p.shearModulus();
     coefficients_.tensile_strength = p.tensile_strength;
     coefficients_.cohesion = p.cohesion;
     coefficients_.friction = p.friction;
@@ -26,30 +21,15 @@ BrittleBpmBondLaw::BrittleBpmBondLaw(const Parameters& p) : parameters_(p)
 
 BrittleBpmBondLaw::Parameters BrittleBpmBondLaw::read(const Dictionary& d)
 {
-    static const Dimensions pascal = Dimensions::fromUnits("Pa");
-    requireKnownEntries(d, {"E", "poissonRatio", "tensileStrength", "cohesion", "frictionCoefficient"});
+    requireKnownEntries(d, ElasticBondParameters::entries());
     Parameters p;
-    p.youngs_modulus = d.getScalar("E", Bounds::positive(), &pascal);
-    p.poisson_ratio = d.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
-    p.tensile_strength = d.getScalar("tensileStrength", Bounds::positive(), &pascal);
-    p.cohesion = d.getScalar("cohesion", Bounds::positive(), &pascal);
-    p.friction = d.getScalar("frictionCoefficient", Bounds::nonNegative());
+    p.read(d);
     return p;
 }
 
 const char* BrittleBpmBondLaw::type() const
 {
     return "brittleBPM";
-}
-
-double BrittleBpmBondLaw::normalModulus() const
-{
-    return coefficients_.normal_modulus;
-}
-
-double BrittleBpmBondLaw::shearModulus() const
-{
-    return coefficients_.shear_modulus;
 }
 
 // The strain energy of a bond of the mean area and length at its tensile strength:
@@ -60,7 +40,8 @@ double BrittleBpmBondLaw::energyFloor(double total_bond_area, int n_bonds, doubl
     return 0.5 * s * s * (total_bond_area / n_bonds) * mean_length / coefficients_.normal_modulus;
 }
 
-void BrittleBpmBondLaw::run(const BondKernelArgs& args) const
+template <>
+void BondLawOf<BrittleBpmLaw, ElasticBondParameters>::run(const BondKernelArgs& args) const
 {
     runBondKernel<BrittleBpmLaw>(args, coefficients_);
 }

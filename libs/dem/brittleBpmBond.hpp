@@ -12,6 +12,7 @@
 #include <string>
 
 #include "dem/bondLawModel.hpp"
+#include "dem/elasticBondParameters.hpp"
 
 namespace rockfrac {
 
@@ -73,34 +74,22 @@ struct BrittleBpmLaw {
     }
 };
 
-// The host side: the law's coefficients from bond/brittleBPM (docs/models/bond/brittleBPM.md).
-class BrittleBpmBondLaw final : public BondLawModel {
+// The host side: the law's coefficients from bond/brittleBPM (docs/models/bond/brittleBPM.md):
+// E, nu, sigma-bar, C and mu, with the paper's Table 2 values as defaults.
+class BrittleBpmBondLaw final : public BondLawOf<BrittleBpmLaw, ElasticBondParameters> {
 public:
-    struct Parameters {
-        double youngs_modulus = 46e9;    // E of Eq. 7 [Pa]
-        double poisson_ratio = 0.25;     // nu of Eqs. 7–8 [-]
-        double tensile_strength = 28e6;  // sigma-bar [Pa]
-        double cohesion = 42e6;          // C [Pa]
-        double friction = 0.8;           // mu [-]
-    };
+    using Parameters = ElasticBondParameters;
 
     BrittleBpmBondLaw();  // the defaults of Parameters
     explicit BrittleBpmBondLaw(const Parameters& parameters);
     static Parameters read(const Dictionary& coefficients);
 
-    const Parameters& parameters() const { return parameters_; }
-    const BrittleBpmLaw::Coefficients& coefficients() const { return coefficients_; }
-
     const char* type() const override;
-    double normalModulus() const override;
-    double shearModulus() const override;
     double energyFloor(double total_bond_area, int n_bonds, double mean_length) const override;
-    void run(const BondKernelArgs& args) const override;
     std::string describe() const override;
-
-private:
-    Parameters parameters_;
-    BrittleBpmLaw::Coefficients coefficients_;
 };
+
+template <>
+void BondLawOf<BrittleBpmLaw, ElasticBondParameters>::run(const BondKernelArgs& args) const;
 
 }  // namespace rockfrac

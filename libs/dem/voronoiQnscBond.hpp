@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dem/bondLawModel.hpp"
+#include "dem/elasticBondParameters.hpp"
 
 namespace rockfrac {
 
@@ -152,41 +153,31 @@ struct VoronoiQnscLaw {
     }
 };
 
+// What a user gives, with the paper's Table 2 values as defaults.
+struct VoronoiQnscParameters : ElasticBondParameters {
+    double fracture_energy_I = 10.0;   // G_I [N/m]
+    double fracture_energy_II = 10.0;  // G_II [N/m]
+    double bk_exponent = 2.0;          // eta of Benzeggagh–Kenane [-]
+    // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
+    double rupture_tolerance = 1e-6;  // [-]
+};
+
 // The host side: the law's coefficients from bond/voronoiQNSC (docs/models/bond/voronoiQNSC.md).
-class VoronoiQnscBondLaw final : public BondLawModel {
+class VoronoiQnscBondLaw final : public BondLawOf<VoronoiQnscLaw, VoronoiQnscParameters> {
 public:
-    // What a user gives, with the paper's Table 2 values as defaults.
-    struct Parameters {
-        double youngs_modulus = 46e9;      // E of Eq. 7 [Pa]
-        double poisson_ratio = 0.25;       // nu of Eqs. 7–8 [-]
-        double tensile_strength = 28e6;    // sigma-bar of Eq. 12 [Pa]
-        double cohesion = 42e6;            // C of tau-bar = C - mu sigma [Pa]
-        double friction = 0.8;             // mu = tan(phi) of tau-bar [-]
-        double fracture_energy_I = 10.0;   // G_I [N/m]
-        double fracture_energy_II = 10.0;  // G_II [N/m]
-        double bk_exponent = 2.0;          // eta of Benzeggagh–Kenane [-]
-        // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
-        double rupture_tolerance = 1e-6;  // [-]
-    };
+    using Parameters = VoronoiQnscParameters;
 
     VoronoiQnscBondLaw();  // the defaults of Parameters
     explicit VoronoiQnscBondLaw(const Parameters& parameters);
     // Reads bond/voronoiQNSC (units and bounds checked; unknown entries refused).
     static Parameters read(const Dictionary& coefficients);
 
-    const Parameters& parameters() const { return parameters_; }
-    const VoronoiQnscLaw::Coefficients& coefficients() const { return coefficients_; }
-
     const char* type() const override;
-    double normalModulus() const override;
-    double shearModulus() const override;
     double energyFloor(double total_bond_area, int n_bonds, double mean_length) const override;
-    void run(const BondKernelArgs& args) const override;
     std::string describe() const override;
-
-private:
-    Parameters parameters_;
-    VoronoiQnscLaw::Coefficients coefficients_;
 };
+
+template <>
+void BondLawOf<VoronoiQnscLaw, VoronoiQnscParameters>::run(const BondKernelArgs& args) const;
 
 }  // namespace rockfrac
