@@ -20,6 +20,8 @@ TimeLoop::TimeLoop(Dictionary controlDict, const std::filesystem::path& caseDir,
 {
 }
 
+TimedRun::TimedRun(TimeLoop& loop) : controlDict(loop.controlDict()), runTime(loop.time()) {}
+
 int TimeLoop::run(TimedRun& run)
 {
     const bool restarted = time_.restarting();

@@ -7,10 +7,10 @@
 // controlDict's time and write control (TimeControl), the step counter, -dry-run,
 // SIGINT/SIGTERM, the progress lines, the sampling cadence and the write rules.
 //
-//   TimeLoop loop(app);                         // system/controlDict
-//   std::unique_ptr<TimedRun> run = ...(app, loop);  // reads and checks every input
+//   TimeLoop loop(app);                                // system/controlDict
+//   std::unique_ptr<TimedRun> run = newXRun(app, loop);  // reads and checks every input
 //   run->printSetup();
-//   return loop.run(*run);                      // the exit code
+//   return loop.run(*run);                             // the exit code
 //
 // loop.run(run): a run that cannot restart refuses a restart; -dry-run stops here;
 // then start(restarted) gives the step to continue from, and for each step n -> n + 1:
@@ -59,21 +59,25 @@ struct Sampling {
     Rows rows = Rows::instantaneous;
 };
 
+class TimeLoop;
+
 // A solver as TimeLoop drives it. The hooks describe the loop, not the physics.
 class TimedRun {
 public:
     virtual ~TimedRun() = default;
+    TimedRun(const TimedRun&) = delete;
+    TimedRun& operator=(const TimedRun&) = delete;
 
     virtual void printSetup() const = 0;
     // A run that writes no restartable state (the crusher) is refused a restart, and its
     // interruption and failure messages name no time directory.
     virtual bool canRestart() const { return true; }
-    virtual Sampling sampling() const = 0;
 
     // After the dry-run check, before any step: the backend and the series files (continued
     // on a restart). Returns the step to continue from: 0, or on a restart the step the
     // state file records.
     virtual long start(bool restarted) = 0;
+    virtual Sampling sampling() const = 0;
     // Before the step from t_step: its stage (and at step 0 the forces of the initial state).
     virtual void beforeStep(long step) = 0;
     virtual StepResult advance(double deltaT) = 0;
@@ -90,6 +94,12 @@ public:
     virtual std::string progress() const { return {}; }
     // The summary after the "End:" line.
     virtual void report(bool interrupted) = 0;
+
+protected:
+    // A run holds its loop's controlDict and clock, as OpenFOAM's solver modules hold runTime.
+    explicit TimedRun(TimeLoop& loop);
+    const Dictionary& controlDict;  // system/controlDict, as the loop read it
+    TimeControl& runTime;           // deltaT (a solver may set it), endTime, time directories
 };
 
 class TimeLoop {

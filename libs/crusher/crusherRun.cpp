@@ -9,6 +9,7 @@
 #include "crusher/destructor.hpp"
 #include "crusher/feedRock.hpp"
 #include "crusher/machineLoading.hpp"
+#include "demCase/demBackend.hpp"
 #include "demCase/demCase.hpp"
 #include "demCuda/cudaDemModel.hpp"
 #include "geometry/triSurface.hpp"
@@ -93,8 +94,8 @@ public:
     void printSetup() const override;
     // Cells are inserted and removed: no state file to continue from.
     bool canRestart() const override { return false; }
-    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::windowMeans}; }
     long start(bool restarted) override;
+    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::windowMeans}; }
     void beforeStep(long step) override;
     StepResult advance(double deltaT) override;
     void afterStep(long step) override;
@@ -107,8 +108,6 @@ public:
 
 private:
     const Application& app;
-    const Dictionary& controlDict;
-    TimeControl& timeControl;
     DemParameters parameters;
     MachineLoading loading;
     std::unique_ptr<FeedFactory> factory;
@@ -117,7 +116,7 @@ private:
     // owner of the state and is synchronised around what changes it on the host (feed,
     // destructor, output), as in bondedDemFoam.
     bool useCuda = false;
-    std::unique_ptr<CudaDemModel> device;
+    std::unique_ptr<DemBackend> backend;  // made by start()
     std::unique_ptr<TimeSeriesWriter> machineSeries, dischargeSeries;
     CellShapes shapes;
     int mantle = -1, concave = -1, choke = -1;
@@ -140,16 +139,13 @@ private:
     std::chrono::steady_clock::time_point wallStart;
     double cellSteps = 0.0;
 
-    void chooseTimeStep();
     double massInside() const;
-    void synchronise();
     static std::vector<Column> machineColumns();
     std::vector<double> machineRow();
     void writeVtk(long step);
 };
 
-CrusherRun::CrusherRun(const Application& a, TimeLoop& loop)
-    : app(a), controlDict(loop.controlDict()), timeControl(loop.time())
+CrusherRun::CrusherRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
 {
     useCuda = readCudaBackend(controlDict);
     parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
@@ -169,33 +165,15 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop)
     concave = liners[1].wall;
     factory->setLiners(std::move(liners));
     if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
-    chooseTimeStep();
-    // Steps too long for a cell pressed into many contact points are split (DemModel::step).
-    model->setStepLimit(timeControl.deltaT() / critical.value, critical.bond_frequency,
-                        critical.bond_damping_ratio);
-    sampleInterval = readSampleInterval(controlDict, "machine", sampleInterval);
-}
-
-// The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
-void CrusherRun::chooseTimeStep()
-{
+    // The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
     const DemModel probe(factory->smallestRock(), parameters);
     rayleighStep = probe.rayleighTimeStep();
     critical = probe.criticalTimeStep();
-    const int given = int(timeControl.deltaTGiven()) + int(controlDict.found("rayleighFraction")) +
-                      int(controlDict.found("criticalFraction"));
-    if (given != 1)
-        throw UserError(controlDict.fileName() +
-                        ": give exactly one of 'deltaT' [s], 'rayleighFraction' or 'criticalFraction'");
-    if (controlDict.found("rayleighFraction"))
-        timeControl.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
-    if (controlDict.found("criticalFraction"))
-        timeControl.setDeltaT(controlDict.getScalar("criticalFraction", Bounds::closed(1e-9, 1)) *
-                              critical.value);
-    if (timeControl.deltaT() > critical.value)
-        throw UserError(controlDict.fileName() + ": the time step " + std::to_string(timeControl.deltaT()) +
-                        " s is above the largest stable step " + std::to_string(critical.value) +
-                        " s of the smallest feed rock; reduce deltaT or use criticalFraction");
+    chooseDemTimeStep(controlDict, runTime, rayleighStep, critical, "the smallest feed rock");
+    // Steps too long for a cell pressed into many contact points are split (DemModel::step).
+    model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,
+                        critical.bond_damping_ratio);
+    sampleInterval = readSampleInterval(controlDict, "machine", sampleInterval);
 }
 
 double CrusherRun::massInside() const
@@ -203,14 +181,6 @@ double CrusherRun::massInside() const
     double m = 0.0;
     for (double c : model->cells().mass) m += c;
     return m;
-}
-
-// Cells are inserted and removed on the host (DemModel::insertCells/removeCells, the
-// same code for both backends); with the CUDA backend the device state comes down
-// before and goes up after, at feed and destructor steps only.
-void CrusherRun::synchronise()
-{
-    if (device) device->downloadState();
 }
 
 std::vector<Column> CrusherRun::machineColumns()
@@ -265,7 +235,7 @@ std::vector<double> CrusherRun::machineRow()
 void CrusherRun::writeVtk(long step)
 {
     if (model->cells().size() == 0) return;
-    synchronise();
+    backend->download();
     writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
 }
 
@@ -273,8 +243,8 @@ void CrusherRun::writeVtk(long step)
 
 long CrusherRun::start(bool)
 {
+    backend = std::make_unique<DemBackend>(*model, useCuda);
     if (useCuda) {
-        device = std::make_unique<CudaDemModel>(*model);
         std::printf("Backend: %s, %s (cells are fed and discharged on the host)\n",
                     cudaBackendSummary().c_str(), cudaBackendInfo().status.c_str());
     } else {
@@ -305,28 +275,23 @@ void CrusherRun::beforeStep(long step)
         model->setWallState(choke, w);
         chokeLowered = true;
     }
-    const long feedEvery = std::max(1L, std::lround(loading.feed.interval / timeControl.deltaT()));
+    const long feedEvery = std::max(1L, std::lround(loading.feed.interval / runTime.deltaT()));
     if (step % feedEvery == 0) {
-        synchronise();  // the factory looks for free space among the current cells
+        // Cells are inserted on the host (DemModel::insertCells, the same code for both
+        // backends): the device state comes down before and goes up after.
+        backend->download();  // the factory looks for free space among the current cells
         const std::vector<InsertedRock> rocks = factory->feed(*model, t);
         for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, *model);
-        if (!rocks.empty() && device) device->upload();
+        if (!rocks.empty()) backend->upload();
     }
-    if (step != 0) return;
-    if (device)
-        device->evaluateForces(timeControl.deltaT());
-    else
-        model->evaluateForces(timeControl.deltaT());
+    if (step == 0) backend->evaluateForces(runTime.deltaT());
 }
 
 StepResult CrusherRun::advance(double deltaT)
 {
     const long stepsBefore = model->counters().steps;
     const double cellsBefore = model->cells().size();
-    if (device)
-        device->step(deltaT);
-    else
-        model->step(deltaT);
+    backend->step(deltaT);
     cellSteps += cellsBefore * double(model->counters().steps - stepsBefore);  // substeps too
     const DemStatus& status = model->status();
     if (status.ok()) return {};
@@ -347,16 +312,16 @@ void CrusherRun::afterStep(long step)
     const double axialTorque = dot(pose.rotation * Vec3{0.0, 0.0, 1.0}, torque);
     const double power = model->wallPower(mantle) + spin.rate() * axialTorque;
     lastPower = power;
-    spin.advance(axialTorque, timeControl.deltaT());
+    spin.advance(axialTorque, runTime.deltaT());
     sumForce += force;
     sumTorque += torque;
     sumPower += power;
     ++sampleSteps;
     if (step % loading.destructor.interval != 0) return;
-    synchronise();
+    backend->download();  // cells are removed on the host, as they are fed
     const DestructorResult r = destroyBelow(*model, loading.destructor.below);
     if (r.fragments.empty()) return;
-    if (device) device->upload();
+    backend->upload();
     compactShapes(shapes, r.new_index);
     massDischarged += r.mass;
     fragmentsDischarged += static_cast<int>(r.fragments.size());
@@ -422,8 +387,8 @@ void CrusherRun::printSetup() const
     std::printf(
         "Time step %.4g s = %.3g x stable step %.4g s of the smallest rock (Rayleigh %.4g s); end time "
         "%.4g s (%ld steps)\n",
-        timeControl.deltaT(), timeControl.deltaT() / critical.value, critical.value, rayleighStep,
-        timeControl.endTime(), timeControl.endStep());
+        runTime.deltaT(), runTime.deltaT() / critical.value, critical.value, rayleighStep, runTime.endTime(),
+        runTime.endStep());
 }
 
 void CrusherRun::report(bool)

@@ -7,6 +7,7 @@
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "core/memoryLimit.hpp"
+#include "demCase/demBackend.hpp"
 #include "demCase/demCase.hpp"
 #include "demCuda/cudaDemModel.hpp"
 #include "effects/modelEffect.hpp"
@@ -61,35 +62,169 @@ bool readCudaBackend(const Dictionary& controlDict)
 namespace {
 
 // The plates' run: reads and checks every input in its constructor (UserError before any
-// step); TimeLoop drives it.
+// step); TimeLoop drives it through the hooks below.
 class BondedDemRun final : public TimedRun {
 public:
     BondedDemRun(const Application& a, TimeLoop& loop);
+    // The log's set-up and summary.
     void printSetup() const override;
-    long start(bool restarted) override;
-    void beforeStep(long step) override;
-    StepResult advance(double deltaT) override;
-    void afterStep(long step) override;
-    void sample() override { plateForceSeries->append(sampleRow()); }
-    std::string stopReason() const override;
-    void writeTime(long step) override;
-    std::string writeFailure(long step) override;
-    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::instantaneous}; }
-    double time() const override { return model->time(); }
-    std::string progress() const override;
     void report(bool interrupted) override;
 
+    // ---- the loop's hooks (core/timeLoop.hpp), in the loop's order
+
+    long start(bool) override
+    {
+        backend = std::make_unique<DemBackend>(*model, useCuda);
+        if (const CudaDemModel* device = backend->device())
+            std::printf("CUDA backend: %.3g MB of device memory (%.0f bytes per cell)\n",
+                        1e-6 * static_cast<double>(device->deviceBytes()),
+                        static_cast<double>(device->deviceBytes()) / model->cells().size());
+        plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce", columns(),
+                                                              restarted ? model->time() : -1.0);
+        return restarted ? restartStep : 0;
+    }
+
+    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::instantaneous}; }
+
+    void beforeStep(long step) override
+    {
+        applyStage();
+        // The reactions of the initial state for its row and time directory (a restart
+        // reads the forces from its state file).
+        if (step == 0) backend->evaluateForces(runTime.deltaT());
+    }
+
+    StepResult advance(double deltaT) override
+    {
+        backend->step(deltaT);
+        const DemStatus& status = model->status();
+        if (status.ok()) return {};
+        return {false, status.message() +
+                           "; likely cause: the time step is too large for the stiffest bond or contact; "
+                           "reduce deltaT"};
+    }
+
+    void afterStep(long) override
+    {
+        if (loadingStarted) peakForce = std::max(peakForce, plateForce());
+    }
+
+    void sample() override { plateForceSeries->append(sampleRow()); }
+
+    std::string stopReason() const override
+    {
+        if (!loadingStarted) return {};
+        const bool approached = loading.stopDisplacement > 0 && plateApproach() >= loading.stopDisplacement;
+        const bool dropped = loading.stopForceFraction > 0 && peakForce > loading.minPeakForce &&
+                             peakForce > 0 && plateForce() < loading.stopForceFraction * peakForce;
+        if (!approached && !dropped) return {};
+        return "stop criterion met (force below the set fraction of its peak, or maximum approach)";
+    }
+
+    void writeTime(long step) override
+    {
+        backend->download();  // the cell arrays from the device
+        runTime.writeTimeDir(model->time(), [&](const fs::path& dir) {
+            writeDemState(dir / "demState", *model, step, peakForce, loadingStarted);
+        });
+        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
+    }
+
+    std::string writeFailure(long step) override
+    {
+        backend->download();
+        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, true);
+        return "VTK/cells_" + std::to_string(step) + ".vtu";
+    }
+
+    double time() const override { return model->time(); }
+
+    std::string progress() const override
+    {
+        const DemEnergies& e = model->energies();
+        const double scale = std::max({e.externalWork(), e.kinetic() + e.stored(), 1e-30});
+        char buffer[160];
+        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  broken %d/%d  balance %+.2g %%",
+                      1e-3 * plateForce(), 1e-3 * peakForce, model->counters().bonds_broken,
+                      model->counters().bonds, 100 * (e.balance() - model->initialBalance()) / scale);
+        return buffer;
+    }
+
 private:
+    void placePlates()
+    {
+        double zMin = 1e300, zMax = -1e300;
+        for (const auto& v : mesh.vertices) {
+            zMin = std::min(zMin, v.z);
+            zMax = std::max(zMax, v.z);
+        }
+        lowerPlate = model->addPlate({0, 0, zMin - loading.startGap}, loading.lower.normal);
+        upperPlate = model->addPlate({0, 0, zMax + loading.startGap}, loading.upper.normal);
+    }
+
+    void restoreState()
+    {
+        const fs::path file = app.path(runTime.startTimeName()) / "demState";
+        const DemRestart r = readDemState(file, *model);
+        restartStep = r.step;
+        peakForce = r.peakForce;
+        loadingStarted = r.loadingStarted;
+        restarted = true;
+        applyStage();
+    }
+
+    // Plates at rest during settling, then at their loading velocities.
+    void applyStage()
+    {
+        const bool loadingNow = model->time() >= loading.settlingTime * (1 - 1e-12);
+        if (loadingNow) loadingStarted = true;
+        model->setWallVelocity(lowerPlate, loadingStarted ? loading.lower.velocity : Vec3{});
+        model->setWallVelocity(upperPlate, loadingStarted ? loading.upper.velocity : Vec3{});
+    }
+
+    double plateForce() const { return model->wallReaction(upperPlate).z; }
+    double lowerPlateForce() const { return -model->wallReaction(lowerPlate).z; }
+    // How far the plates have approached each other.
+    double plateApproach() const
+    {
+        return model->wallDisplacement(lowerPlate).z - model->wallDisplacement(upperPlate).z;
+    }
+    // What the machine records: the plate approach plus whatever model effects put
+    // in series with the specimen (compliance, seating); equal without them.
+    double gapChange() const { return effects.recordedDisplacement(plateApproach(), plateForce()); }
+
+    std::vector<double> sampleRow() const
+    {
+        const DemEnergies& e = model->energies();
+        return {model->time(),
+                gapChange(),
+                plateForce(),
+                lowerPlateForce(),
+                static_cast<double>(model->counters().bonds_broken),
+                e.kinetic(),
+                e.stored(),
+                e.dissipated(),
+                e.fracture,
+                e.externalWork(),
+                e.balance() - model->initialBalance(),
+                plateApproach()};
+    }
+
+    static std::vector<Column> columns()
+    {
+        return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},        {"forceLower", "N"},
+                {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},       {"dissipated", "J"},
+                {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"}, {"plateApproach", "m"}};
+    }
+
     const Application& app;
-    const Dictionary& controlDict;
-    TimeControl& timeControl;
     DemParameters parameters;
     Loading loading;
     ModelEffects effects;  // constant/modelEffects (optional): off = the baseline model
     VoronoiMesh mesh;
     std::unique_ptr<DemModel> model;
     bool useCuda = false;
-    std::unique_ptr<CudaDemModel> device;  // made by start() when useCuda
+    std::unique_ptr<DemBackend> backend;  // made by start()
     std::unique_ptr<TimeSeriesWriter> plateForceSeries;
     CellShapes shapes;
     int lowerPlate = -1, upperPlate = -1;
@@ -102,28 +237,9 @@ private:
     double peakForce = 0.0;
     bool loadingStarted = false;
     bool restarted = false;
-
-    void placePlates();
-    void chooseTimeStep();
-    void restoreState();
-    void applyStage();
-    void synchroniseForOutput();
-    double plateForce() const { return model->wallReaction(upperPlate).z; }
-    double lowerPlateForce() const { return -model->wallReaction(lowerPlate).z; }
-    // How far the plates have approached each other.
-    double plateApproach() const
-    {
-        return model->wallDisplacement(lowerPlate).z - model->wallDisplacement(upperPlate).z;
-    }
-    // What the machine records: the plate approach plus whatever model effects put
-    // in series with the specimen (compliance, seating); equal without them.
-    double gapChange() const { return effects.recordedDisplacement(plateApproach(), plateForce()); }
-    std::vector<double> sampleRow() const;
-    static std::vector<Column> columns();
 };
 
-BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop)
-    : app(a), controlDict(loop.controlDict()), timeControl(loop.time())
+BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
 {
     useCuda = readCudaBackend(controlDict);
     parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
@@ -143,186 +259,14 @@ BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop)
     shapes = captureCellShapes(mesh, *model);
     placePlates();
     effects.applyToModel(*model, {model->wall(lowerPlate).origin.z, model->wall(upperPlate).origin.z});
-    chooseTimeStep();
-    // Steps too long for a cell pressed into many contact points are split (DemModel::step).
-    model->setStepLimit(timeControl.deltaT() / critical.value, critical.bond_frequency,
-                        critical.bond_damping_ratio);
-    sampleInterval = readSampleInterval(controlDict, "plateForce", sampleInterval);
-    if (timeControl.restarting()) restoreState();
-}
-
-void BondedDemRun::placePlates()
-{
-    double zMin = 1e300, zMax = -1e300;
-    for (const auto& v : mesh.vertices) {
-        zMin = std::min(zMin, v.z);
-        zMax = std::max(zMax, v.z);
-    }
-    lowerPlate = model->addPlate({0, 0, zMin - loading.startGap}, loading.lower.normal);
-    upperPlate = model->addPlate({0, 0, zMax + loading.startGap}, loading.upper.normal);
-}
-
-void BondedDemRun::chooseTimeStep()
-{
     rayleighStep = model->rayleighTimeStep();
     critical = model->criticalTimeStep();
-    const int given = int(timeControl.deltaTGiven()) + int(controlDict.found("rayleighFraction")) +
-                      int(controlDict.found("criticalFraction"));
-    if (given != 1)
-        throw UserError(controlDict.fileName() +
-                        ": give exactly one of 'deltaT' [s], 'rayleighFraction' (the step as a fraction of "
-                        "the Rayleigh step, e.g. 0.02) or 'criticalFraction' (the step as a fraction of the "
-                        "largest stable step of the bonds and contacts, e.g. 0.8)");
-    if (controlDict.found("rayleighFraction"))
-        timeControl.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
-    if (controlDict.found("criticalFraction"))
-        timeControl.setDeltaT(controlDict.getScalar("criticalFraction", Bounds::closed(1e-9, 1)) *
-                              critical.value);
-    if (timeControl.deltaT() > critical.value) {
-        char buffer[400];
-        std::snprintf(
-            buffer, sizeof(buffer),
-            ": the time step %.4g s is above the largest stable step %.4g s of this mesh and these "
-            "parameters (bonds: highest frequency %.4g rad/s, damping ratio %.3g; contacts %.4g s); "
-            "set deltaT <= %.4g or use criticalFraction (e.g. 0.8)",
-            timeControl.deltaT(), critical.value, critical.bond_frequency, critical.bond_damping_ratio,
-            critical.contact, critical.value);
-        throw UserError(controlDict.fileName() + buffer);
-    }
-}
-
-void BondedDemRun::restoreState()
-{
-    const fs::path file = app.path(timeControl.startTimeName()) / "demState";
-    const DemRestart r = readDemState(file, *model);
-    restartStep = r.step;
-    peakForce = r.peakForce;
-    loadingStarted = r.loadingStarted;
-    restarted = true;
-    applyStage();
-}
-
-// Plates at rest during settling, then at their loading velocities.
-void BondedDemRun::applyStage()
-{
-    const bool loadingNow = model->time() >= loading.settlingTime * (1 - 1e-12);
-    if (loadingNow) loadingStarted = true;
-    model->setWallVelocity(lowerPlate, loadingStarted ? loading.lower.velocity : Vec3{});
-    model->setWallVelocity(upperPlate, loadingStarted ? loading.upper.velocity : Vec3{});
-}
-
-// The device state into the model before anything reads its cell arrays.
-void BondedDemRun::synchroniseForOutput()
-{
-    if (device) device->downloadState();
-}
-
-std::vector<double> BondedDemRun::sampleRow() const
-{
-    const DemEnergies& e = model->energies();
-    return {model->time(),
-            gapChange(),
-            plateForce(),
-            lowerPlateForce(),
-            static_cast<double>(model->counters().bonds_broken),
-            e.kinetic(),
-            e.stored(),
-            e.dissipated(),
-            e.fracture,
-            e.externalWork(),
-            e.balance() - model->initialBalance(),
-            plateApproach()};
-}
-
-std::vector<Column> BondedDemRun::columns()
-{
-    return {{"Time", "s"},        {"gapChange", "m"},    {"force", "N"},        {"forceLower", "N"},
-            {"brokenBonds", "-"}, {"kinetic", "J"},      {"strain", "J"},       {"dissipated", "J"},
-            {"fracture", "J"},    {"externalWork", "J"}, {"balanceError", "J"}, {"plateApproach", "m"}};
-}
-
-// ---- the loop's hooks (core/timeLoop.hpp) ----------------------------------------
-
-long BondedDemRun::start(bool)
-{
-    if (useCuda) {
-        device = std::make_unique<CudaDemModel>(*model);
-        std::printf("CUDA backend: %.3g MB of device memory (%.0f bytes per cell)\n",
-                    1e-6 * static_cast<double>(device->deviceBytes()),
-                    static_cast<double>(device->deviceBytes()) / model->cells().size());
-    }
-    plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce", columns(),
-                                                          restarted ? model->time() : -1.0);
-    return restarted ? restartStep : 0;
-}
-
-void BondedDemRun::beforeStep(long step)
-{
-    applyStage();
-    if (step != 0) return;
-    // The reactions of the initial state for its row and time directory (a restart reads
-    // the forces from its state file).
-    if (device)
-        device->evaluateForces(timeControl.deltaT());
-    else
-        model->evaluateForces(timeControl.deltaT());
-}
-
-// One step on the chosen backend; the model's time, energies, counters, status and
-// plate reactions are current afterwards on either.
-StepResult BondedDemRun::advance(double deltaT)
-{
-    if (device)
-        device->step(deltaT);
-    else
-        model->step(deltaT);
-    const DemStatus& status = model->status();
-    if (status.ok()) return {};
-    return {false, status.message() +
-                       "; likely cause: the time step is too large for the stiffest bond or contact; "
-                       "reduce deltaT"};
-}
-
-void BondedDemRun::afterStep(long)
-{
-    if (loadingStarted) peakForce = std::max(peakForce, plateForce());
-}
-
-std::string BondedDemRun::stopReason() const
-{
-    if (!loadingStarted) return {};
-    const bool approached = loading.stopDisplacement > 0 && plateApproach() >= loading.stopDisplacement;
-    const bool dropped = loading.stopForceFraction > 0 && peakForce > loading.minPeakForce && peakForce > 0 &&
-                         plateForce() < loading.stopForceFraction * peakForce;
-    if (!approached && !dropped) return {};
-    return "stop criterion met (force below the set fraction of its peak, or maximum approach)";
-}
-
-void BondedDemRun::writeTime(long step)
-{
-    synchroniseForOutput();
-    timeControl.writeTimeDir(model->time(), [&](const fs::path& dir) {
-        writeDemState(dir / "demState", *model, step, peakForce, loadingStarted);
-    });
-    writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
-}
-
-std::string BondedDemRun::writeFailure(long step)
-{
-    synchroniseForOutput();
-    writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, true);
-    return "VTK/cells_" + std::to_string(step) + ".vtu";
-}
-
-std::string BondedDemRun::progress() const
-{
-    const DemEnergies& e = model->energies();
-    const double scale = std::max({e.externalWork(), e.kinetic() + e.stored(), 1e-30});
-    char buffer[160];
-    std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  broken %d/%d  balance %+.2g %%",
-                  1e-3 * plateForce(), 1e-3 * peakForce, model->counters().bonds_broken,
-                  model->counters().bonds, 100 * (e.balance() - model->initialBalance()) / scale);
-    return buffer;
+    chooseDemTimeStep(controlDict, runTime, rayleighStep, critical, "this mesh and these parameters");
+    // Steps too long for a cell pressed into many contact points are split (DemModel::step).
+    model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,
+                        critical.bond_damping_ratio);
+    sampleInterval = readSampleInterval(controlDict, "plateForce", sampleInterval);
+    if (runTime.restarting()) restoreState();
 }
 
 // The interfaces' areas and, when the bond size effect is on, its factors and the
@@ -374,14 +318,14 @@ void BondedDemRun::printSetup() const
         parameters.bond_damping);
     printBondSizeEffect(model->interfaces(), parameters);
     std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n",
-                timeControl.deltaT(), timeControl.deltaT() / rayleighStep, rayleighStep,
-                timeControl.endTime(), timeControl.endStep());
+                runTime.deltaT(), runTime.deltaT() / rayleighStep, rayleighStep, runTime.endTime(),
+                runTime.endStep());
     std::printf(
         "Stable step %.4g s (bonds %.4g s: highest frequency %.4g rad/s, damping ratio %.3g, Gershgorin "
         "translation %.4g s, rotation %.4g s; contacts %.4g s); the step is %.3g of it\n",
         critical.value, critical.bond, critical.bond_frequency, critical.bond_damping_ratio,
         critical.bond_translation_bound, critical.bond_rotation_bound, critical.contact,
-        timeControl.deltaT() / critical.value);
+        runTime.deltaT() / critical.value);
     std::printf(
         "Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, settling %.4g s; memory %.3g MB\n",
         loading.upper.velocity.x, loading.upper.velocity.y, loading.upper.velocity.z,
@@ -393,7 +337,7 @@ void BondedDemRun::printSetup() const
     else
         std::printf("Backend: cpu (OpenMP)\n");
     if (restarted)
-        std::printf("Restart from time %s (step %ld)\n", timeControl.startTimeName().c_str(), restartStep);
+        std::printf("Restart from time %s (step %ld)\n", runTime.startTimeName().c_str(), restartStep);
 }
 
 void BondedDemRun::report(bool)

@@ -37,50 +37,96 @@ Bounds3 meshBounds(const TetMesh& mesh)
 }
 
 // The FEM run: reads and checks every input in its constructor (UserError before any
-// step); TimeLoop drives it.
+// step); TimeLoop drives it through the hooks below.
 class FeFractureRun final : public TimedRun {
 public:
     FeFractureRun(const Application& a, TimeLoop& loop);
+    // The log's set-up and summary.
     void printSetup() const override;
-    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::instantaneous}; }
-    long start(bool restarted) override;
-    void beforeStep(long) override { applyStage(model->time(), timeControl.deltaT()); }
-    StepResult advance(double deltaT) override;
-    void afterStep(long step) override;
-    void sample() override;
-    std::string stopReason() const override;
-    void writeTime(long step) override;
-    std::string writeFailure(long step) override;
-    double time() const override { return model->time(); }
-    std::string progress() const override;
     void report(bool interrupted) override;
 
-private:
-    const Application& app;
-    const Dictionary& controlDict;
-    TimeControl& timeControl;
-    FemParameters parameters;
-    FemLoading loading;
-    TetMesh mesh;
-    Bounds3 bounds;
-    std::unique_ptr<FemModel> model;
-    std::unique_ptr<VirtualExtensometer> extensometer;
-    int lowerPlate = -1, upperPlate = -1;
-    std::vector<double> arcUnitForces;  // per Pa
-    double arcTopForcePerPascal = 0.0;
-    MaterialPoint topPole, bottomPole;  // arc load: the approach of the two poles
-    long sampleInterval = 10;           // steps between rows (functions/plateForce/writeInterval)
-    std::unique_ptr<TimeSeriesWriter> plateForceSeries, extensometerSeries, centreStressSeries;
-    // centreStress function: elements whose centroid lies within `radius` of the line
-    // through the specimen centre along y (the disc axis); empty = off.
-    std::vector<int> probeElements;
-    double probeRadius = 0.0;
-    double stableStep = 0.0;
-    FemRunState run;
-    std::vector<FailureLoadDetector> detectors;
-    bool restarted = false;
-    bool quasiStaticWarned = false;
+    // ---- the loop's hooks (core/timeLoop.hpp), in the loop's order
 
+    long start(bool) override
+    {
+        // The .dat files print 10 digits, so the row of the restart time may read back a little
+        // above it; the next row is a whole step later (dt / t >> 1e-9).
+        const double restartTime = restarted ? model->time() * (1 + 1e-9) : -1.0;
+        plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce",
+                                                              plateForceColumns(), restartTime);
+        extensometerSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "extensometer",
+                                                                extensometerColumns(), restartTime);
+        if (!probeElements.empty())
+            centreStressSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "centreStress",
+                                                                    centreStressColumns(), restartTime);
+        return restarted ? run.step : 0;
+    }
+
+    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::instantaneous}; }
+
+    void beforeStep(long) override { applyStage(model->time(), runTime.deltaT()); }
+
+    StepResult advance(double deltaT) override
+    {
+        const StepStatus status = model->step(deltaT);
+        return {status.ok, status.message};
+    }
+
+    // The running maxima and detectors every step; the arc load's failure at the sample steps.
+    void afterStep(long step) override
+    {
+        track();
+        if (step % sampleInterval == 0) trackArcFailure();
+    }
+
+    void sample() override
+    {
+        plateForceSeries->append(plateForceRow());
+        extensometerSeries->append(extensometerRow());
+        if (centreStressSeries) centreStressSeries->append(centreStressRow());
+        checkQuasiStatic();
+    }
+
+    std::string stopReason() const override
+    {
+        if (!loadingStarted(model->time())) return {};
+        if (loading.kind == FemLoading::Kind::arcLoad) {
+            if (!detectors[1].failed()) return {};
+            return "failure under the arc load (kinetic energy above 1 % of the external work)";
+        }
+        if (!(loading.stopForceFraction > 0)) return {};
+        if (!(run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
+              plateForce() < loading.stopForceFraction * run.peakForce))
+            return {};
+        return "stop criterion met (force below the set fraction of its peak)";
+    }
+
+    void writeTime(long step) override
+    {
+        run.step = step;
+        runTime.writeTimeDir(model->time(),
+                             [&](const fs::path& dir) { writeFemState(dir / "femState", *model, run); });
+        writeFemVtk(app.casePath(), step, *model, restarted || step > 0);
+    }
+
+    std::string writeFailure(long step) override
+    {
+        writeFemVtk(app.casePath(), step, *model, true);
+        return "VTK/fem_" + std::to_string(step) + ".vtu";
+    }
+
+    double time() const override { return model->time(); }
+
+    std::string progress() const override
+    {
+        char buffer[200];
+        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  cracked %ld/%zu  KE/W %.2g %%",
+                      1e-3 * plateForce(), 1e-3 * run.peakForce, crackedElements(), mesh.numTets(),
+                      100 * kineticRatio());
+        return buffer;
+    }
+
+private:
     // Refuse a mesh whose model cannot fit, before the model's arrays exist
     // (core/memoryLimit.hpp). Bytes per node (positions, displacements,
     // velocities, forces, masses and their parallel partial sums) and per
@@ -155,13 +201,13 @@ private:
     void chooseTimeStep()
     {
         stableStep = model->stableTimeStep();
-        if (!timeControl.deltaTGiven()) {
-            timeControl.setDeltaT(stableStep);
+        if (!runTime.deltaTGiven()) {
+            runTime.setDeltaT(stableStep);
             return;
         }
         const double limit = stableStep / parameters.timeStepSafety;
-        if (timeControl.deltaT() > limit)
-            throw UserError(controlDict.fileName() + ": deltaT " + formatNumber(timeControl.deltaT()) +
+        if (runTime.deltaT() > limit)
+            throw UserError(controlDict.fileName() + ": deltaT " + formatNumber(runTime.deltaT()) +
                             " s exceeds the stable step " + formatNumber(limit) +
                             " s of this mesh; remove deltaT to use timeStepSafety x the stable step");
     }
@@ -170,12 +216,12 @@ private:
     void checkPlateReachesSpecimen(const Dictionary& loadingDict) const
     {
         if (loading.kind != FemLoading::Kind::plates) return;
-        const double loadingTime = std::max(0.0, timeControl.endTime() - loading.settlingTime);
+        const double loadingTime = std::max(0.0, runTime.endTime() - loading.settlingTime);
         const double travel = loading.approachSpeed() * loadingTime;
         if (travel <= loading.startGap)
             throw UserError(
                 loadingDict.fileName() + ": the upper plate travels " + formatNumber(travel) +
-                " m by endTime " + formatNumber(timeControl.endTime()) + " s, less than plates/startGap " +
+                " m by endTime " + formatNumber(runTime.endTime()) + " s, less than plates/startGap " +
                 formatNumber(loading.startGap) +
                 " m: it never touches the specimen; reduce startGap or raise endTime or the speed");
     }
@@ -238,7 +284,7 @@ private:
 
     void restoreState()
     {
-        const fs::path file = app.path(timeControl.startTimeName()) / "femState";
+        const fs::path file = app.path(runTime.startTimeName()) / "femState";
         run = readFemState(file, *model);
         if (run.detectorMaximum.size() != detectors.size())
             throw UserError(file.string() + ": the failure-load detectors do not match this solver");
@@ -516,10 +562,32 @@ private:
                         1e3 * height, 1e3 * (bounds.hi.y - bounds.lo.y),
                         1e-6 * 2 * load(1) / (M_PI * height * (bounds.hi.y - bounds.lo.y)));
     }
+
+    const Application& app;
+    FemParameters parameters;
+    FemLoading loading;
+    TetMesh mesh;
+    Bounds3 bounds;
+    std::unique_ptr<FemModel> model;
+    std::unique_ptr<VirtualExtensometer> extensometer;
+    int lowerPlate = -1, upperPlate = -1;
+    std::vector<double> arcUnitForces;  // per Pa
+    double arcTopForcePerPascal = 0.0;
+    MaterialPoint topPole, bottomPole;  // arc load: the approach of the two poles
+    long sampleInterval = 10;           // steps between rows (functions/plateForce/writeInterval)
+    std::unique_ptr<TimeSeriesWriter> plateForceSeries, extensometerSeries, centreStressSeries;
+    // centreStress function: elements whose centroid lies within `radius` of the line
+    // through the specimen centre along y (the disc axis); empty = off.
+    std::vector<int> probeElements;
+    double probeRadius = 0.0;
+    double stableStep = 0.0;
+    FemRunState run;
+    std::vector<FailureLoadDetector> detectors;
+    bool restarted = false;
+    bool quasiStaticWarned = false;
 };
 
-FeFractureRun::FeFractureRun(const Application& a, TimeLoop& loop)
-    : app(a), controlDict(loop.controlDict()), timeControl(loop.time())
+FeFractureRun::FeFractureRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
 {
     parameters = readFemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
     const Dictionary loadingDict = Dictionary::readFile(a.path("constant/loading"));
@@ -538,7 +606,7 @@ FeFractureRun::FeFractureRun(const Application& a, TimeLoop& loop)
     checkPlateReachesSpecimen(loadingDict);
     readFunctions();
     initialiseDetectors();
-    if (timeControl.restarting()) restoreState();
+    if (runTime.restarting()) restoreState();
 }
 
 void FeFractureRun::printSetup() const
@@ -569,7 +637,7 @@ void FeFractureRun::printSetup() const
     std::printf(
         "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
         "added mass %.3g %%; mass damping %.4g 1/s\n",
-        timeControl.deltaT(), stableStep, timeControl.endTime(), timeControl.endStep(), mass,
+        runTime.deltaT(), stableStep, runTime.endTime(), runTime.endStep(), mass,
         100 * model->addedMassFraction(), parameters.massDamping);
     if (loading.kind == FemLoading::Kind::plates)
         std::printf(
@@ -595,82 +663,7 @@ void FeFractureRun::printSetup() const
         std::printf("centreStress: mean stress of %zu elements within %.4g mm of the disc axis\n",
                     probeElements.size(), 1e3 * probeRadius);
     if (restarted)
-        std::printf("Restart from time %s (step %ld)\n", timeControl.startTimeName().c_str(), run.step);
-}
-
-// ---- the loop's hooks (core/timeLoop.hpp) ----------------------------------------
-
-long FeFractureRun::start(bool)
-{
-    // The .dat files print 10 digits, so the row of the restart time may read back a little
-    // above it; the next row is a whole step later (dt / t >> 1e-9).
-    const double restartTime = restarted ? model->time() * (1 + 1e-9) : -1.0;
-    plateForceSeries =
-        std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce", plateForceColumns(), restartTime);
-    extensometerSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "extensometer",
-                                                            extensometerColumns(), restartTime);
-    if (!probeElements.empty())
-        centreStressSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "centreStress",
-                                                                centreStressColumns(), restartTime);
-    return restarted ? run.step : 0;
-}
-
-StepResult FeFractureRun::advance(double deltaT)
-{
-    const StepStatus status = model->step(deltaT);
-    return {status.ok, status.message};
-}
-
-// The running maxima and detectors every step; the arc load's failure at the sample steps.
-void FeFractureRun::afterStep(long step)
-{
-    track();
-    if (step % sampleInterval == 0) trackArcFailure();
-}
-
-void FeFractureRun::sample()
-{
-    plateForceSeries->append(plateForceRow());
-    extensometerSeries->append(extensometerRow());
-    if (centreStressSeries) centreStressSeries->append(centreStressRow());
-    checkQuasiStatic();
-}
-
-std::string FeFractureRun::stopReason() const
-{
-    if (!loadingStarted(model->time())) return {};
-    if (loading.kind == FemLoading::Kind::arcLoad) {
-        if (!detectors[1].failed()) return {};
-        return "failure under the arc load (kinetic energy above 1 % of the external work)";
-    }
-    if (!(loading.stopForceFraction > 0)) return {};
-    if (!(run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
-          plateForce() < loading.stopForceFraction * run.peakForce))
-        return {};
-    return "stop criterion met (force below the set fraction of its peak)";
-}
-
-void FeFractureRun::writeTime(long step)
-{
-    run.step = step;
-    timeControl.writeTimeDir(model->time(),
-                             [&](const fs::path& dir) { writeFemState(dir / "femState", *model, run); });
-    writeFemVtk(app.casePath(), step, *model, restarted || step > 0);
-}
-
-std::string FeFractureRun::writeFailure(long step)
-{
-    writeFemVtk(app.casePath(), step, *model, true);
-    return "VTK/fem_" + std::to_string(step) + ".vtu";
-}
-
-std::string FeFractureRun::progress() const
-{
-    char buffer[200];
-    std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  cracked %ld/%zu  KE/W %.2g %%",
-                  1e-3 * plateForce(), 1e-3 * run.peakForce, crackedElements(), mesh.numTets(),
-                  100 * kineticRatio());
-    return buffer;
+        std::printf("Restart from time %s (step %ld)\n", runTime.startTimeName().c_str(), run.step);
 }
 
 void FeFractureRun::report(bool interrupted)

@@ -54,8 +54,8 @@ TimeLoop makeLoop(const fs::path& caseDir, bool dryRun = false)
 // A run that only counts: its state is its step n (t = n deltaT), written to <time>/state.
 class FakeRun final : public TimedRun {
 public:
-    FakeRun(const fs::path& caseDir, TimeControl& time, Sampling sampling, bool restartable = true)
-        : caseDir_(caseDir), time_(time), sampling_(sampling), restartable_(restartable)
+    FakeRun(const fs::path& caseDir, TimeLoop& loop, Sampling sampling, bool restartable = true)
+        : TimedRun(loop), caseDir_(caseDir), sampling_(sampling), restartable_(restartable)
     {
     }
 
@@ -69,7 +69,7 @@ public:
     Sampling sampling() const override { return sampling_; }
     long start(bool restarted) override
     {
-        if (restarted) std::ifstream(caseDir_ / time_.startTimeName() / "state") >> n_;
+        if (restarted) std::ifstream(caseDir_ / runTime.startTimeName() / "state") >> n_;
         startedAt = n_;
         return n_;
     }
@@ -93,14 +93,14 @@ public:
         CHECK(step == n_);
         writes.push_back(step);
         if (!restartable_) return;
-        time_.writeTimeDir(time(), [&](const fs::path& dir) { std::ofstream(dir / "state") << step; });
+        runTime.writeTimeDir(time(), [&](const fs::path& dir) { std::ofstream(dir / "state") << step; });
     }
     std::string writeFailure(long step) override
     {
         failureDump = step;
         return "VTK/fake_" + std::to_string(step) + ".vtu";
     }
-    double time() const override { return time_.timeOf(n_); }
+    double time() const override { return runTime.timeOf(n_); }
     void report(bool interrupted) override
     {
         reported = true;
@@ -109,7 +109,6 @@ public:
 
 private:
     fs::path caseDir_;
-    TimeControl& time_;
     Sampling sampling_;
     bool restartable_;
     long n_ = 0;
@@ -123,7 +122,7 @@ TEST_CASE("TimeLoop writes at writeDue and the last step; every write has its ro
 {
     const fs::path dir = freshCase("uninterrupted");
     TimeLoop loop = makeLoop(dir);
-    FakeRun run(dir, loop.time(), everyOther);
+    FakeRun run(dir, loop, everyOther);
     REQUIRE(loop.run(run) == exitSuccess);
     CHECK(run.writes == std::vector<long>{0, 3, 6, 9, 10});
     // Every second step, and the write steps that are not sample steps.
@@ -142,7 +141,7 @@ TEST_CASE("TimeLoop stops at the run's stop reason with a write and its row", "[
 {
     const fs::path dir = freshCase("stop");
     TimeLoop loop = makeLoop(dir);
-    FakeRun run(dir, loop.time(), everyOther);
+    FakeRun run(dir, loop, everyOther);
     run.stopAt = 5;
     REQUIRE(loop.run(run) == exitSuccess);
     CHECK(run.writes == std::vector<long>{0, 3, 5});
@@ -156,14 +155,14 @@ TEST_CASE("TimeLoop: a signal writes the state without a row; the continuation i
 {
     const fs::path reference = freshCase("reference");
     TimeLoop referenceLoop = makeLoop(reference);
-    FakeRun uninterrupted(reference, referenceLoop.time(), everyOther);
+    FakeRun uninterrupted(reference, referenceLoop, everyOther);
     REQUIRE(referenceLoop.run(uninterrupted) == exitSuccess);
 
     const fs::path dir = freshCase("signal");
     std::vector<long> rows, writes;
     {
         TimeLoop loop = makeLoop(dir);
-        FakeRun run(dir, loop.time(), everyOther);
+        FakeRun run(dir, loop, everyOther);
         run.signalAt = 5;
         CHECK(loop.run(run) == 128 + SIGTERM);
         CHECK(run.writes == std::vector<long>{0, 3, 5});   // the state at the signal's step ...
@@ -176,7 +175,7 @@ TEST_CASE("TimeLoop: a signal writes the state without a row; the continuation i
     {
         TimeLoop loop = makeLoop(dir);  // startFrom latestTime: 0.5, step 5
         REQUIRE(loop.time().restarting());
-        FakeRun run(dir, loop.time(), everyOther);
+        FakeRun run(dir, loop, everyOther);
         REQUIRE(loop.run(run) == exitSuccess);
         CHECK(run.startedAt == 5);
         CHECK(run.before.front() == 5);
@@ -191,7 +190,7 @@ TEST_CASE("TimeLoop: a failed step dumps the state and names the last complete t
 {
     const fs::path dir = freshCase("failure");
     TimeLoop loop = makeLoop(dir);
-    FakeRun run(dir, loop.time(), everyOther);
+    FakeRun run(dir, loop, everyOther);
     run.failAt = 7;
     try {
         loop.run(run);
@@ -213,7 +212,7 @@ TEST_CASE("TimeLoop: window-mean rows, and a run that cannot restart", "[timeLoo
     const fs::path dir = freshCase("windows");
     {
         TimeLoop loop = makeLoop(dir);
-        FakeRun run(dir, loop.time(), windows, false);
+        FakeRun run(dir, loop, windows, false);
         REQUIRE(loop.run(run) == exitSuccess);
         CHECK(run.writes == std::vector<long>{0, 3, 6, 9, 10});
         // Rows only every 4 steps, and the rest of the last window at the end.
@@ -222,7 +221,7 @@ TEST_CASE("TimeLoop: window-mean rows, and a run that cannot restart", "[timeLoo
     }
     {
         TimeLoop loop = makeLoop(dir);
-        FakeRun run(dir, loop.time(), windows, false);
+        FakeRun run(dir, loop, windows, false);
         run.signalAt = 5;
         CHECK(loop.run(run) == 128 + SIGTERM);
         CHECK(run.writes == std::vector<long>{0, 3, 5});
@@ -231,7 +230,7 @@ TEST_CASE("TimeLoop: window-mean rows, and a run that cannot restart", "[timeLoo
     // A time directory to start from is refused before anything runs.
     fs::create_directories(dir / "0.5");
     TimeLoop loop = makeLoop(dir);
-    FakeRun run(dir, loop.time(), windows, false);
+    FakeRun run(dir, loop, windows, false);
     CHECK_THROWS_WITH(loop.run(run), Catch::Contains("cannot restart"));
     CHECK(run.startedAt == -1);
 }
@@ -240,7 +239,7 @@ TEST_CASE("TimeLoop: -dry-run runs and writes nothing", "[timeLoop]")
 {
     const fs::path dir = freshCase("dryRun");
     TimeLoop loop = makeLoop(dir, true);
-    FakeRun run(dir, loop.time(), everyOther);
+    FakeRun run(dir, loop, everyOther);
     CHECK(loop.run(run) == exitSuccess);
     CHECK(run.startedAt == -1);
     CHECK(run.writes.empty());
