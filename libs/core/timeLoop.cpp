@@ -56,7 +56,7 @@ int TimeLoop::run(TimedRun& run)
         if (interrupted()) {
             reason = run.canRestart()
                          ? "interrupted by a signal: state written, continue with startFrom latestTime"
-                         : "interrupted by a signal: state written (this run cannot restart)";
+                         : "interrupted by a signal: output written (this run cannot restart)";
             exitCode = interruptExitCode();
         }
         if (!stop.empty()) reason = stop;
