@@ -40,11 +40,17 @@ function(rockfrac_add_library name)
 endfunction()
 
 # rockfrac_add_application(<name> SOURCES ... DEPS ...)
+# An application under applications/ is installed into <prefix>/bin (cmake/RockfracInstall.cmake);
+# elsewhere (bench/) it is not.
 function(rockfrac_add_application name)
   cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${A_SOURCES})
   target_link_libraries(${name} PRIVATE ${A_DEPS})
   rockfrac_target_options(${name})
+  string(FIND "${CMAKE_CURRENT_SOURCE_DIR}/" "${PROJECT_SOURCE_DIR}/applications/" position)
+  if(position EQUAL 0)
+    install(TARGETS ${name} RUNTIME DESTINATION bin)
+  endif()
 endfunction()
 
 # rockfrac_set_test_cost(<test> "<first>;<second>" <use second: ON|OFF>): the COST

@@ -36,6 +36,7 @@
 #include "voronoi/domain.hpp"
 #include "voronoi/tessellation.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -84,8 +85,10 @@ void intactBlock(int nCells, int steps, bool cuda, double given_dt, CellOrder or
     // mesh should be; -order seeding keeps the random order of the seeds.
     const VoronoiMesh mesh = generateVoronoiMesh(domain, nCells, 0.6 * spacing, 7, 0.1, order);
     DemParameters p;
-    p.bond_tensile_strength = 1e12;  // intact: no bond ever breaks
-    p.bond_cohesion = 1.5e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = 1e12;  // intact: no bond ever breaks
+    q.cohesion = 1.5e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.gravity = {0, 0, 0};
     p.damping_reading = DampingReading::criticalFraction;
     p.bond_damping = 0.05;
@@ -173,7 +176,9 @@ void linerContacts(int rocks, int steps)
     const TriSurface concave = revolveProfileShaped(concave_profile, 360, SurfaceFacing::towardsAxis);
     DemParameters p;
     p.rock_youngs_modulus = 7.7e9;  // the reduced crusher's 10 x softer rock
-    p.bond_youngs_modulus = 4.6e9;
+    VoronoiQnscBondLaw::Parameters q;
+    q.youngs_modulus = 4.6e9;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.damping_reading = DampingReading::criticalFraction;
     p.bond_damping = 0.05;
     const VoronoiMesh rock =

@@ -35,7 +35,7 @@ CalibratedParameter readParameter(const Entry& e, const fs::path& caseDir)
     if (!e.isDict())
         throw UserError(e.keywordLocation.str() + ": parameter '" + e.keyword +
                         "' must be a dictionary, e.g. '" + e.keyword +
-                        " { entry bond/E; range (20e9 80e9); }'");
+                        " { entry bond/voronoiQNSC/E; range (20e9 80e9); }'");
     const Dictionary& d = *e.dict;
     CalibratedParameter p;
     p.name = e.keyword;
@@ -57,7 +57,7 @@ TiedEntry readTied(const Entry& e, const CalibrationStudy& study)
     if (!e.isDict())
         throw UserError(e.keywordLocation.str() + ": tied entry '" + e.keyword +
                         "' must be a dictionary, e.g. '" + e.keyword +
-                        " { entry bond/cohesion; factor 1.5; of tensileStrength; }'");
+                        " { entry bond/voronoiQNSC/cohesion; factor 1.5; of tensileStrength; }'");
     const Dictionary& d = *e.dict;
     TiedEntry t;
     t.name = e.keyword;
@@ -219,7 +219,7 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
     }
     if (s.model == "fem" && (!s.seeds || s.seeds->values.size() < 2))
         throw UserError(dict.endLocation().str() +
-                        ": the FEM calibration compares distributions: give seeds { entry dfh/seed; values "
+                        ": the FEM calibration compares distributions: give seeds { entry kstDfh/dfh/seed; values "
                         "(1 ... 10); }");
     readMethodSettings(dict, s);
     readTarget(dict, s);

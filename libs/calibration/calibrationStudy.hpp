@@ -16,7 +16,7 @@ namespace rockfrac::calibration {
 struct CalibratedParameter {
     std::string name;
     std::filesystem::path file;  // relative to the case, default constant/rockProperties
-    std::string entry;           // slash path, e.g. bond/E
+    std::string entry;           // slash path, e.g. bond/voronoiQNSC/E
     std::string unit;            // "-" when not given
     double low = 0.0, high = 0.0;
 };

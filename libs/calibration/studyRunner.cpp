@@ -13,9 +13,9 @@
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/subprocess.hpp"
 #include "core/textFile.hpp"
-#include "stats/subprocess.hpp"
-#include "stats/textTable.hpp"
+#include "io/textTable.hpp"
 
 namespace rockfrac::calibration {
 
@@ -60,7 +60,7 @@ int runForwardingSignals(const std::vector<std::string>& argv, const fs::path& d
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &oldInt);
     sigaction(SIGTERM, &action, &oldTerm);
-    const pid_t pid = stats::startProcess(argv, directory, log);
+    const pid_t pid = startProcess(argv, directory, log);
     int status = 0;
     bool passedOn = false;
     while (waitpid(pid, &status, 0) < 0) {
@@ -75,7 +75,7 @@ int runForwardingSignals(const std::vector<std::string>& argv, const fs::path& d
     if (forwardedSignal)
         throw Interrupted("interrupted (signal " + std::to_string(int(forwardedSignal)) +
                           "); the runs done so far are kept: run the same command again to continue");
-    return stats::shellExitStatus(status);
+    return shellExitStatus(status);
 }
 
 // Newest modification time of the inputs of a case (system/, constant/ files, not meshes).
@@ -143,7 +143,7 @@ std::vector<MemberRun> readMembers(const CalibrationStudy& study, const fs::path
     if (!fs::is_regular_file(table))
         throw UserError("runCases wrote no '" + table.string() +
                         "': " + lastLine(directory / "log.runCases"));
-    const stats::TextTable t = stats::readTextTable(table);
+    const TextTable t = readTextTable(table);
     const int idColumn = t.column("member"), statusColumn = t.column("status"), seedColumn = t.column("seed");
     std::vector<int> valueColumns;
     for (const auto& p : study.parameters) valueColumns.push_back(t.column(p.name));
@@ -154,7 +154,7 @@ std::vector<MemberRun> readMembers(const CalibrationStudy& study, const fs::path
         m.done = row.at(static_cast<std::size_t>(statusColumn)) == "done";
         if (seedColumn >= 0) m.seed = row.at(static_cast<std::size_t>(seedColumn));
         for (int c : valueColumns)
-            m.values.push_back(stats::parseNumber(row.at(static_cast<std::size_t>(c))).value());
+            m.values.push_back(parseNumber(row.at(static_cast<std::size_t>(c))).value());
         m.directory = directory / "members" / m.id;
         members.push_back(m);
     }
@@ -168,7 +168,7 @@ fs::path runCasesExecutable()
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (!ec && fs::exists(self.parent_path() / "runCases")) return self.parent_path() / "runCases";
-    if (auto found = stats::findExecutable("runCases")) return *found;
+    if (auto found = findExecutable("runCases")) return *found;
     throw UserError(
         "calibrateModel needs runCases, which is neither beside it nor on PATH; build rockfrac "
         "(ninja -C build) or add its bin/ to PATH");

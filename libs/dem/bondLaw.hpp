@@ -1,12 +1,14 @@
 #pragma once
-// The bond law interface: what one bond between two cells sees and returns,
-// the interface kernel that applies a law to every bond of a cell pair, and the
-// selection table (bondLawTable.cpp) that maps a keyword to a law.
+// The bond law interface: what one bond between two cells sees and returns, and the
+// interface kernel that applies a law to every bond of a cell pair (CPU and CUDA).
 //
-// A law is a struct with one static RF_HD function
-//     BondOutput evaluate(const BondMaterial&, const BondInput&, BondHistory&)
-// A new law is a new file (the struct and its runner, see voronoiQnscBond.*)
-// plus one line in bondLawTable.cpp.
+// A law is a struct with its coefficients and three static RF_HD functions:
+//     struct Coefficients { double normal_modulus, shear_modulus; ... };  // k_n, k_t first
+//     BondOutput evaluate(const Coefficients&, const BondInput&, BondHistory&)
+//     void scaleStrength(Coefficients&, double factor)   // a weaker or stronger interface
+// Its host side (bondLawModel.hpp) reads the coefficients from the law's own
+// sub-dictionary; a new law is a new file pair (see voronoiQnscBond.*, brittleBpmBond.*)
+// plus one line in bondLawTable.cpp and, for the GPU, one in libs/demCuda.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,19 +18,6 @@
 #include "dem/quat.hpp"
 
 namespace rockfrac {
-
-// Bond constants shared by every bond of a run.
-struct BondMaterial {
-    double normal_modulus = 0.0;      // k_n = E(1-nu)/((1+nu)(1-2nu))  (Eq. 7) [Pa]
-    double shear_modulus = 0.0;       // k_t = E/(2(1+nu))  (Eq. 8) [Pa]
-    double tensile_strength = 0.0;    // sigma-bar [Pa]
-    double cohesion = 0.0;            // C [Pa]
-    double friction = 0.0;            // mu [-]
-    double fracture_energy_I = 0.0;   // G_I [N/m]
-    double fracture_energy_II = 0.0;  // G_II [N/m]
-    double bk_exponent = 2.0;         // eta [-]
-    double rupture_tolerance = 0.0;   // Remark 1.1, relative to d_e0
-};
 
 // Life of a bond: elastic ("init" = true in Algorithm 1), softening, broken (D = 1).
 enum BondStage : unsigned char { bondElastic = 0, bondSoftening = 1, bondBroken = 2 };
@@ -71,6 +60,29 @@ struct BondOutput {
     double fracture_dissipation = 0.0;  // energy dissipated by damage growth in this call [J]
 };
 
+// The elastic bond of Eqs. 5–8, degraded by D (Eqs. 16–17: no damage in compression), with
+// the stiffness-proportional dashpot of Eqs. 18–19 from the anchor points' relative velocity
+// (it always opposes the relative motion, docs/theory-dem.md): force, strain energy and
+// dashpot power into out. Every law's intact bond is this one (damage 0).
+RF_HD inline void elasticBondResponse(double normal_modulus, double shear_modulus, const BondInput& in,
+                                      double l, double inverse_l, double normal_opening,
+                                      const Vec3& shear_opening, double sigma_trial, double damage,
+                                      BondOutput& out)
+{
+    const double intact = 1.0 - damage;
+    const double sigma = normal_opening < 0.0 ? sigma_trial : intact * sigma_trial;
+    const Vec3 shear_stress = (intact * shear_modulus * inverse_l) * shear_opening;  // tau t
+    const double normal_rate = dot(in.relative_velocity, in.normal) * inverse_l;     // eps-dot
+    const Vec3 shear_rate =
+        (in.relative_velocity - (normal_rate * l) * in.normal) * inverse_l;  // gamma-dot t
+    const double beta = in.damping_beta;
+    out.force_on_i = in.bond_area * ((sigma + beta * normal_modulus * normal_rate) * in.normal +
+                                     shear_stress + (beta * shear_modulus) * shear_rate);
+    out.strain_energy = 0.5 * in.bond_area * (sigma * normal_opening + dot(shear_stress, shear_opening));
+    out.damping_power = in.bond_area * beta * l *
+                        (normal_modulus * normal_rate * normal_rate + shear_modulus * norm2(shear_rate));
+}
+
 // Sums over a block of interfaces, reduced in block order (deterministic).
 struct BondBlockSums {
     double strain_energy = 0.0;
@@ -98,7 +110,6 @@ constexpr int bondOnsetPending = -1;
 // CUDA backend can pass device pointers). Interfaces are cell pairs that share a
 // face; interface k owns bonds [bond_offset[k], bond_offset[k+1]).
 struct BondKernelArgs {
-    BondMaterial material;
     int n_interfaces = 0;
     int block_size = 256;
     // Cells (world frame; rotation and world angular velocity refreshed each step).
@@ -167,7 +178,8 @@ RF_HD inline BondSoftening softeningOf(const BondHistory& h)
 // without a softening slot reaches its onset: the caller claims the slot and calls
 // again with the same state, which gives the same evaluation, now stored.
 template <class Law>
-RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockSums& block)
+RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename Law::Coefficients& coefficients,
+                                      int k, BondBlockSums& block)
 {
     const int ci = a.cell_i[k], cj = a.cell_j[k];
     // The two cells' state as local copies: the history stores below go through
@@ -187,14 +199,13 @@ RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, int k, BondBlockS
     in.reference_length = a.length_i[k] + a.length_j[k];
     in.bond_area = a.bond_area[k];
     in.damping_beta = a.damping_beta[k];
-    // A model effect may scale this interface's strengths; without one the shared
-    // constants are used as they are (no copy per interface).
-    BondMaterial scaled;
-    const BondMaterial* material = &a.material;
+    // A model effect or the size effect may scale this interface's strengths; without one
+    // the shared coefficients are used as they are (no copy per interface).
+    typename Law::Coefficients scaled;
+    const typename Law::Coefficients* material = &coefficients;
     if (a.strength_scale) {
-        scaled = a.material;
-        scaled.tensile_strength *= a.strength_scale[k];
-        scaled.cohesion *= a.strength_scale[k];
+        scaled = coefficients;
+        Law::scaleStrength(scaled, a.strength_scale[k]);
         material = &scaled;
     }
     const int first = a.bond_offset[k];
@@ -274,12 +285,12 @@ inline void prefetchInterface(const BondKernelArgs& a, int k)
 // The OpenMP loop over blocks of interfaces (static schedule; a block's sums do
 // not depend on the thread count), or the serial second pass over only_interfaces.
 template <class Law>
-void runBondKernel(const BondKernelArgs& a)
+void runBondKernel(const BondKernelArgs& a, const typename Law::Coefficients& coefficients)
 {
     if (a.only_interfaces) {
         for (int i = 0; i < a.n_only; ++i) {
             const int k = a.only_interfaces[i];
-            bondInterfaceKernel<Law>(a, k, a.block_sums[k / a.block_size]);
+            bondInterfaceKernel<Law>(a, coefficients, k, a.block_sums[k / a.block_size]);
         }
         return;
     }
@@ -293,16 +304,10 @@ void runBondKernel(const BondKernelArgs& a)
         for (int k = block * a.block_size; k < end; ++k) {
             if (k + 4 < a.n_interfaces) prefetchLine(a.anchor_node_offset + a.cell_j[k + 4]);
             if (k + 2 < a.n_interfaces) prefetchInterface(a, k + 2);
-            bondInterfaceKernel<Law>(a, k, sums);
+            bondInterfaceKernel<Law>(a, coefficients, k, sums);
         }
         a.block_sums[block] = sums;
     }
 }
-
-using BondLawRunner = void (*)(const BondKernelArgs&);
-
-// The law registered under name; a UserError listing the known names otherwise.
-BondLawRunner bondLawRunner(const std::string& name);
-std::vector<std::string> bondLawNames();
 
 }  // namespace rockfrac

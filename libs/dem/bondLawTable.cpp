@@ -1,36 +1,40 @@
-// The bond law selection table: keyword -> law. One line per law.
-#include <sstream>
-#include <utility>
+// The bond law selection table: keyword -> law built from its own sub-dictionary. One line per law.
+#include <memory>
 
-#include "core/error.hpp"
-#include "dem/bondLaw.hpp"
+#include "core/selector.hpp"
+#include "dem/bondLawModel.hpp"
+#include "dem/brittleBpmBond.hpp"
 #include "dem/voronoiQnscBond.hpp"
 
 namespace rockfrac {
 
 namespace {
 
-const std::pair<const char*, BondLawRunner> bond_law_table[] = {
-    {"voronoiQNSC", &runVoronoiQnscBonds},
-};
+template <class Law>
+std::unique_ptr<BondLawModel> make(const Dictionary& coefficients)
+{
+    return std::make_unique<Law>(Law::read(coefficients));
+}
 
 }  // namespace
 
-std::vector<std::string> bondLawNames()
+const Selector<BondLawModel>& bondLaws()
 {
-    std::vector<std::string> names;
-    for (const auto& entry : bond_law_table) names.emplace_back(entry.first);
-    return names;
+    static const Selector<BondLawModel> table("bond law", {
+                                                              {"voronoiQNSC", &make<VoronoiQnscBondLaw>},
+                                                              {"brittleBPM", &make<BrittleBpmBondLaw>},
+                                                          });
+    return table;
 }
 
-BondLawRunner bondLawRunner(const std::string& name)
+std::vector<std::string> bondLawNames()
 {
-    for (const auto& entry : bond_law_table)
-        if (name == entry.first) return entry.second;
-    std::ostringstream message;
-    message << "unknown bond law '" << name << "'; known:";
-    for (const auto& known : bondLawNames()) message << ' ' << known;
-    throw UserError(message.str());
+    return bondLaws().names();
+}
+
+std::shared_ptr<const BondLawModel> defaultBondLaw()
+{
+    return std::make_shared<VoronoiQnscBondLaw>();
 }
 
 }  // namespace rockfrac

@@ -4,8 +4,9 @@
 //
 // A law is a struct with one static RF_HD function
 //     ContactOutput evaluate(const ContactConstants&, const ContactInput&, Vec3& tangential_spring)
-// A new law is a new file (the struct and its two runners, see hertzMindlinContact.*)
-// plus one line in contactLawTable.cpp.
+// A new law is a new file pair (the struct and its ContactLawModel, see
+// hertzMindlinContact.*) plus one line in contactLawTable.cpp.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,13 +83,28 @@ enum ContactStatus : unsigned char { contactNone = 0, contactActive = 1, contact
 struct PairKernelArgs;
 struct WallKernelArgs;
 
-struct ContactLawRunners {
-    void (*pairs)(const PairKernelArgs&) = nullptr;
-    void (*walls)(const WallKernelArgs&) = nullptr;
+// The host side of a contact law: the object `contact { model <keyword>; }` selects. The
+// pairings' friction and restitution (contact/rockRock, contact/rockSteel) and the cell
+// contact's form (contact/cellContact point | patch) are the same for every law (they make
+// the ContactConstants and the kernels' arguments); a law with coefficients of its own
+// reads them from contact/<keyword>.
+class ContactLawModel {
+public:
+    virtual ~ContactLawModel() = default;
+    virtual const char* type() const = 0;
+    // The law over every cell–cell pair and every cell–wall item (OpenMP, deterministic).
+    virtual void runPairs(const PairKernelArgs& args) const = 0;
+    virtual void runWalls(const WallKernelArgs& args) const = 0;
 };
 
-// The law registered under name; a UserError listing the known names otherwise.
-ContactLawRunners contactLawRunners(const std::string& name);
+class Dictionary;
+template <class Base, class... Args>
+class Selector;
+
+// The table of contact laws (contactLawTable.cpp).
+const Selector<ContactLawModel>& contactLaws();
 std::vector<std::string> contactLawNames();
+// Hertz–Mindlin, the paper's (what DemParameters starts from).
+std::shared_ptr<const ContactLawModel> defaultContactLaw();
 
 }  // namespace rockfrac

@@ -1,8 +1,7 @@
 // The contact law selection table: keyword -> law. One line per law.
-#include <sstream>
-#include <utility>
+#include <memory>
 
-#include "core/error.hpp"
+#include "core/selector.hpp"
 #include "dem/contactLaw.hpp"
 #include "dem/hertzMindlinContact.hpp"
 
@@ -10,27 +9,34 @@ namespace rockfrac {
 
 namespace {
 
-const std::pair<const char*, ContactLawRunners> contact_law_table[] = {
-    {"hertzMindlin", {&runHertzMindlinPairs, &runHertzMindlinWalls}},
-};
+// A law without coefficients of its own (its sub-dictionary may be left out; when given it
+// must be empty).
+template <class Law>
+std::unique_ptr<ContactLawModel> makeWithoutCoefficients(const Dictionary& coefficients)
+{
+    requireKnownEntries(coefficients, {}, "this contact law has no coefficients of its own");
+    return std::make_unique<Law>();
+}
 
 }  // namespace
 
-std::vector<std::string> contactLawNames()
+const Selector<ContactLawModel>& contactLaws()
 {
-    std::vector<std::string> names;
-    for (const auto& entry : contact_law_table) names.emplace_back(entry.first);
-    return names;
+    static const Selector<ContactLawModel> table(
+        "contact law", {
+                           {"hertzMindlin", &makeWithoutCoefficients<HertzMindlinContactLaw>, true},
+                       });
+    return table;
 }
 
-ContactLawRunners contactLawRunners(const std::string& name)
+std::vector<std::string> contactLawNames()
 {
-    for (const auto& entry : contact_law_table)
-        if (name == entry.first) return entry.second;
-    std::ostringstream message;
-    message << "unknown contact law '" << name << "'; known:";
-    for (const auto& known : contactLawNames()) message << ' ' << known;
-    throw UserError(message.str());
+    return contactLaws().names();
+}
+
+std::shared_ptr<const ContactLawModel> defaultContactLaw()
+{
+    return std::make_shared<HertzMindlinContactLaw>();
 }
 
 }  // namespace rockfrac

@@ -35,22 +35,6 @@ ContactConstants contactConstants(double E1, double nu1, double E2, double nu2, 
     return k;
 }
 
-BondMaterial bondMaterial(const DemParameters& p)
-{
-    BondMaterial m;
-    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
-    m.normal_modulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // Eq. 7
-    m.shear_modulus = E / (2.0 * (1.0 + nu));                             // Eq. 8
-    m.tensile_strength = p.bond_tensile_strength;
-    m.cohesion = p.bond_cohesion;
-    m.friction = p.bond_friction;
-    m.fracture_energy_I = p.fracture_energy_mode_I;
-    m.fracture_energy_II = p.fracture_energy_mode_II;
-    m.bk_exponent = p.bk_exponent;
-    m.rupture_tolerance = p.rupture_tolerance;
-    return m;
-}
-
 }  // namespace
 
 namespace demDetail {
@@ -116,10 +100,7 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
     setUpLaws();
     skin_ = parameters_.skin_distance;
     interfaces_.bond_offset.assign(1, 0);
-    cells_.core_vertex_offset.assign(1, 0);
-    cells_.core_edge_offset.assign(1, 0);
-    cells_.core_plane_offset.assign(1, 0);
-    cells_.anchor_node_offset.assign(1, 0);
+    resizeFields(cells_, 0);  // the CSR offsets start at {0}
     buildIncidence();
     refreshKinematicCaches();
     computeForces(0.0);
@@ -130,9 +111,6 @@ DemModel::DemModel(const DemParameters& parameters) : parameters_(parameters)
 void DemModel::setUpLaws()
 {
     parameters_.validate();
-    bond_runner_ = bondLawRunner(parameters_.bond_law);
-    contact_runners_ = contactLawRunners(parameters_.contact_law);
-    bond_material_ = bondMaterial(parameters_);
     rock_rock_ = contactConstants(parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
                                   parameters_.rock_youngs_modulus, parameters_.rock_poisson_ratio,
                                   parameters_.rock_rock_friction, parameters_.rock_rock_restitution);
@@ -161,22 +139,10 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
     const int first = c.size();
     const Mat3 pose_rotation = rotationMatrix(normalised(pose.orientation));
     std::vector<Quat> mesh_orientation(n);
-    c.position.resize(first + n);
-    c.velocity.resize(first + n, Vec3{});
-    c.angular_velocity.resize(first + n, Vec3{});
-    c.orientation.resize(first + n);
-    c.force.resize(first + n, Vec3{});
-    c.torque.resize(first + n, Vec3{});
-    c.mass.resize(first + n);
-    c.principal_inertia.resize(first + n);
-    c.dilation_radius.resize(first + n, dilation);
-    c.bounding_radius.resize(first + n);
-    c.initial_bond_count.resize(first + n, 0);
-    if (c.core_vertex_offset.empty()) c.core_vertex_offset.assign(1, 0);
-    if (c.core_edge_offset.empty()) c.core_edge_offset.assign(1, 0);
-    if (c.core_plane_offset.empty()) c.core_plane_offset.assign(1, 0);
+    resizeFields(c, first + n);  // at rest, no forces, no bonds yet
     for (int local = 0; local < n; ++local) {
         const int cell = first + local;
+        c.dilation_radius[cell] = dilation;
         const double density = parameters_.rock_density;
         c.mass[cell] = density * mesh.volumes[local];
         smallest_radius_ = std::min(smallest_radius_, std::cbrt(3.0 * mesh.volumes[local] / (4.0 * pi)));
@@ -293,7 +259,6 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
             std::max(bond.cellI, bond.cellJ) >= mesh.nCells())
             throw UserError("the Voronoi mesh has an invalid bond");
     CellArrays& c = cells_;
-    if (c.anchor_node_offset.empty()) c.anchor_node_offset.assign(1, 0);
     std::vector<int> ends(2 * std::size_t(mesh.nBonds()));
     std::iota(ends.begin(), ends.end(), 0);
     auto endCell = [&](int e) { return e % 2 == 0 ? mesh.bonds[e / 2].cellI : mesh.bonds[e / 2].cellJ; };
@@ -360,7 +325,7 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         // bond (axial stiffness k = k_n A/(n l_ij) between the reduced mass m*):
         // c = 2 zeta sqrt(k m*) = beta_eff k  =>  beta_eff = 2 zeta sqrt(m*/k).
         const double l = head.lI + head.lJ;
-        const double stiffness = bond_material_.normal_modulus * head.area / l;
+        const double stiffness = parameters_.bond_law->normalModulus() * head.area / l;
         const double reduced_mass = cells_.mass[ci] * cells_.mass[cj] / (cells_.mass[ci] + cells_.mass[cj]);
         f.damping_beta.push_back(parameters_.damping_reading == DampingReading::absolute
                                      ? beta
@@ -388,10 +353,8 @@ void DemModel::appendBonds(const VoronoiMesh& mesh, int first_cell, const std::v
         head_index = last;
     }
     const int n_interfaces = f.size(), n_bonds = static_cast<int>(b.node_i.size());
-    f.force_on_i.resize(n_interfaces, Vec3{});
-    f.torque_on_i.resize(n_interfaces, Vec3{});
-    f.torque_on_j.resize(n_interfaces, Vec3{});
-    b.stage.resize(n_bonds, bondElastic);
+    resizeFields<derivedField>(f, n_interfaces);  // no forces yet
+    resizeFields(b, n_bonds);                     // stage: bondElastic
     counters_.bonds = n_bonds;
 }
 

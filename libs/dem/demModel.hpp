@@ -70,14 +70,14 @@ std::string stepCheckSummary(const DemCounters& counters);
 // What the model's arrays hold, by part [bytes] (bench/, docs/benchmarks.md).
 struct DemMemoryBytes {
     std::size_t cells = 0;         // state, constants and per-step caches per cell
-    std::size_t cores = 0;         // eroded core vertices and edges (contact geometry)
+    std::size_t cores = 0;         // eroded core vertices, edges and planes (contact geometry)
     std::size_t anchor_nodes = 0;  // bond anchor nodes per cell
     std::size_t interfaces = 0;    // per bonded cell pair, incl. its force/torque sums
     std::size_t bonds = 0;         // per bond: two node indices and the stage
     std::size_t softening = 0;     // the softening pool (bonds past their onset)
     std::size_t pairs = 0;         // contact candidates with their histories
-    std::size_t wall_items = 0;    // cell–wall candidates and the wall triangles with their features
-    std::size_t lists = 0;         // per-cell gather and neighbour lists
+    std::size_t wall_items = 0;    // cell–wall candidates, the walls, their triangles, features and grids
+    std::size_t lists = 0;         // per-cell gather and neighbour lists, per-block partial sums
 
     std::size_t total() const
     {
@@ -219,6 +219,11 @@ public:
     // bitwise as if never interrupted (else forces are recomputed at the restart state,
     // with the dashpots seeing end-of-step instead of mid-step velocities).
     void setCellForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque);
+    // The same from the restart arrays of `state` (demState.hpp): setCellState takes the
+    // kinematic state, setCellForces the derived ones (force and torque) and does nothing
+    // when they are all empty (a state file written before they were kept).
+    void setCellState(const CellArrays& state);
+    void setCellForces(const CellArrays& state);
     void setBondHistory(const BondArrays& history);  // anchors are kept; stages and histories replaced
     void setContactHistory(const ContactPairArrays& pairs, const WallContactArrays& wall_items);
     void setWallState(int wall, const WallState& state);
@@ -240,11 +245,38 @@ public:
     DemMemoryBytes memoryUse() const;
     std::size_t memoryBytes() const { return memoryUse().total(); }
 
-private:
-    // The CUDA backend mirrors step() with device kernels and uses this model for
-    // what stays on the host (walls, neighbour-list rebuilds, energy bookkeeping).
-    friend class CudaDemModel;
+    // ---- Lists and flags a device backend reads --------------------------------
+    // The per-cell gather lists (CSR per cell; entry = 2 * item + side, side 1 = the
+    // item's second cell; wall items are sorted by cell, so a range per cell).
+    struct GatherLists {
+        const std::vector<int>& interface_offset;
+        const std::vector<int>& interfaces;
+        const std::vector<int>& pair_offset;
+        const std::vector<int>& pairs;
+        const std::vector<int>& wall_item_offset;
+    };
+    GatherLists gatherLists() const
+    {
+        return {cell_interface_offset_, cell_interfaces_, cell_pair_offset_, cell_pairs_,
+                cell_wall_item_offset_};
+    }
+    bool listsValid() const { return lists_valid_; }
+    bool forcesValid() const { return forces_valid_; }
+    // One entry per bond (elastic bonds: zeros), from the softening pool.
+    std::vector<BondSoftening> softeningPerBond() const;
 
+    // ---- Device backends ---------------------------------------------------
+    // The CUDA backend (libs/demCuda) steps this model's arrays on a device and leaves to
+    // this model what stays on the host (walls, neighbour-list rebuilds, bookkeeping).
+    // Beyond the public interface it may use DeviceSide only, which only it can get.
+    class DeviceKey {
+        friend class CudaDemModel;
+        DeviceKey() {}  // user-provided: no aggregate initialisation around it
+    };
+    class DeviceSide;
+    DeviceSide deviceSide(DeviceKey);
+
+private:
     void setUpLaws();
     // Append the cells of mesh (placed by pose unless identity) and their bonds; the
     // body frames relative to the mesh frame are returned for the bonds' anchors.
@@ -253,6 +285,7 @@ private:
     void buildIncidence();
     void shrinkToFit();
     void refreshKinematicCaches();
+    void refreshWallPoses();
     bool neighbourListsStale() const;
     bool neighbourListsStale(double cell_move) const;
     void rebuildNeighbourLists();
@@ -289,9 +322,8 @@ private:
         return time_;
     }
     BondKernelArgs bondArgs();
-    // The softening history with one entry per bond (elastic bonds: zeros), and back:
-    // slots are claimed for every interface with a bond past its onset.
-    std::vector<BondSoftening> softeningPerBond() const;
+    // The softening history from one entry per bond (softeningPerBond): slots are claimed
+    // for every interface with a bond past its onset.
     void setSofteningPerBond(const std::vector<BondSoftening>& per_bond);
     void claimSofteningSlot(int interface);
     GatherArgs gatherArgs();
@@ -300,10 +332,7 @@ private:
     WallPose wallPose(const WallState& wall) const;
 
     DemParameters parameters_;
-    BondMaterial bond_material_;
     ContactConstants rock_rock_, rock_steel_;
-    BondLawRunner bond_runner_ = nullptr;
-    ContactLawRunners contact_runners_;
     double rayleigh_time_step_ = 0.0;
     double smallest_radius_ = 1e300;  // smallest volume-equivalent radius of any cell so far
     double skin_ = 0.0;
@@ -367,5 +396,79 @@ private:
     DemCounters counters_;
     DemStatus status_;
 };
+
+// What a device backend may do to a DemModel besides its public interface: mirror the
+// array groups (upload them, download into them) and run the host's share of a step it
+// takes on the device (cudaDemModel.hpp says what runs where).
+class DemModel::DeviceSide {
+public:
+    // The arrays the device mirrors, and the per-cell kinematic caches.
+    CellArrays& cells() { return m_.cells_; }
+    InterfaceArrays& interfaces() { return m_.interfaces_; }
+    BondStorage& bonds() { return m_.bonds_; }
+    ContactPairArrays& pairs() { return m_.pairs_; }
+    WallContactArrays& wallItems() { return m_.wall_items_; }
+    std::vector<Mat3>& rotation() { return m_.rotation_; }
+    std::vector<Vec3>& angularVelocityWorld() { return m_.angular_velocity_world_; }
+    const std::vector<Vec3>& positionAtBuild() const { return m_.position_at_build_; }
+    void setSofteningPerBond(const std::vector<BondSoftening>& per_bond) { m_.setSofteningPerBond(per_bond); }
+
+    // The laws' constants, as the CPU kernels get them.
+    const ContactConstants& rockRock() const { return m_.rock_rock_; }
+    const ContactConstants& rockSteel() const { return m_.rock_steel_; }
+
+    // Where the device's sums are booked.
+    DemEnergies& energies() { return m_.energies_; }
+    DemForceRates& forceRates() { return m_.force_rates_; }
+    DemCounters& counters() { return m_.counters_; }
+    WallState& wall(int w) { return m_.walls_[w]; }
+
+    // The host's share of a force evaluation and of a step.
+    const std::vector<WallPose>& refreshWallPoses()
+    {
+        m_.refreshWallPoses();
+        return m_.wall_poses_;
+    }
+    // After the bond forces, the lists are rebuilt when stale after cell_move (the largest
+    // cell displacement since the build) or when an interface has cracked since
+    // (DemModel::computeForces' test).
+    bool listsStale(double cell_move) const { return m_.neighbourListsStale(cell_move); }
+    bool crackedSinceListBuild() const
+    {
+        return m_.counters_.interfaces_cracked != m_.interfaces_cracked_at_build_;
+    }
+    void rebuildLists() { m_.rebuildNeighbourLists(); }
+    void forcesComputed() { m_.forces_valid_ = true; }
+    void finishMeasurement(double kinetic_translation, double kinetic_rotation, int non_finite_cell)
+    {
+        m_.finishMeasurement(kinetic_translation, kinetic_rotation, non_finite_cell);
+    }
+    template <class SingleStep>
+    double stepInParts(double dt, SingleStep&& single)
+    {
+        return m_.stepInParts(dt, single);
+    }
+    void beginStep(double dt)  // DemModel::singleStep before the first half kick
+    {
+        m_.last_dt_ = dt;
+        m_.bookFirstHalfKick(dt);
+    }
+    void moveWalls(double dt) { m_.moveWalls(dt); }
+    void endStep(double dt)  // after the second half kick
+    {
+        m_.time_ += dt;
+        ++m_.counters_.steps;
+    }
+
+private:
+    friend class DemModel;
+    explicit DeviceSide(DemModel& model) : m_(model) {}
+    DemModel& m_;
+};
+
+inline DemModel::DeviceSide DemModel::deviceSide(DeviceKey)
+{
+    return DeviceSide(*this);
+}
 
 }  // namespace rockfrac

@@ -5,6 +5,7 @@
 #include "core/parallel.hpp"
 #include "dem/cellKernels.hpp"
 #include "dem/demModel.hpp"
+#include "dem/kernelViews.hpp"
 
 namespace rockfrac {
 
@@ -15,6 +16,11 @@ void DemModel::refreshKinematicCaches()
     for (int c = 0; c < n; ++c)
         refreshCellKinematics(cells_.orientation.data(), cells_.angular_velocity.data(), rotation_.data(),
                               angular_velocity_world_.data(), c);
+    refreshWallPoses();
+}
+
+void DemModel::refreshWallPoses()
+{
     wall_poses_.clear();
     for (const WallState& w : walls_) wall_poses_.push_back(wallPose(w));
 }
@@ -22,33 +28,7 @@ void DemModel::refreshKinematicCaches()
 BondKernelArgs DemModel::bondArgs()
 {
     BondKernelArgs a;
-    a.material = bond_material_;
-    a.n_interfaces = interfaces_.size();
-    a.position = cells_.position.data();
-    a.velocity = cells_.velocity.data();
-    a.angular_velocity_world = angular_velocity_world_.data();
-    a.rotation = rotation_.data();
-    a.cell_i = interfaces_.cell_i.data();
-    a.cell_j = interfaces_.cell_j.data();
-    a.bond_offset = interfaces_.bond_offset.data();
-    a.normal_i_body = interfaces_.normal_i.data();
-    a.normal_j_body = interfaces_.normal_j.data();
-    a.length_i = interfaces_.length_i.data();
-    a.length_j = interfaces_.length_j.data();
-    a.bond_area = interfaces_.bond_area.data();
-    a.damping_beta = interfaces_.damping_beta.data();
-    a.strength_scale = interfaces_.strength_scale.empty() ? nullptr : interfaces_.strength_scale.data();
-    a.softening_slot = interfaces_.softening_slot.data();
-    a.intact_bonds = interfaces_.intact_bonds.data();
-    a.force_on_i = interfaces_.force_on_i.data();
-    a.torque_on_i = interfaces_.torque_on_i.data();
-    a.torque_on_j = interfaces_.torque_on_j.data();
-    a.anchor_node_offset = cells_.anchor_node_offset.data();
-    a.anchor_nodes = cells_.anchor_nodes.data();
-    a.node_i = bonds_.node_i.data();
-    a.node_j = bonds_.node_j.data();
-    a.stage = bonds_.stage.data();
-    a.softening = bonds_.softening.data();
+    viewBondArrays(a, cells_, interfaces_, bonds_, rotation_, angular_velocity_world_);
     bond_block_sums_.resize((a.n_interfaces + a.block_size - 1) / a.block_size);
     a.block_sums = bond_block_sums_.data();
     return a;
@@ -56,26 +36,12 @@ BondKernelArgs DemModel::bondArgs()
 
 CellContactView DemModel::cellView() const
 {
-    CellContactView v;
-    v.position = cells_.position.data();
-    v.velocity = cells_.velocity.data();
-    v.angular_velocity_world = angular_velocity_world_.data();
-    v.rotation = rotation_.data();
-    v.mass = cells_.mass.data();
-    v.dilation_radius = cells_.dilation_radius.data();
-    v.bounding_radius = cells_.bounding_radius.data();
-    v.core_vertex_offset = cells_.core_vertex_offset.data();
-    v.core_vertices = cells_.core_vertices.data();
-    v.core_edge_offset = cells_.core_edge_offset.data();
-    v.core_edges = cells_.core_edges.data();
-    v.core_plane_offset = cells_.core_plane_offset.data();
-    v.core_planes = cells_.core_planes.data();
-    return v;
+    return cellContactView(cells_, rotation_, angular_velocity_world_);
 }
 
 void DemModel::runBondKernel(double dt)
 {
-    bond_runner_(bondArgs());
+    parameters_.bond_law->run(bondArgs());
     // Interfaces whose first onset found no softening slot: claimed in interface order
     // (deterministic whatever the thread count), then evaluated again, now stored.
     int pending = 0;
@@ -90,7 +56,7 @@ void DemModel::runBondKernel(double dt)
         BondKernelArgs again = bondArgs();
         again.only_interfaces = onsets.data();
         again.n_only = static_cast<int>(onsets.size());
-        bond_runner_(again);
+        parameters_.bond_law->run(again);
     }
     double strain = 0.0;
     force_rates_.bond_damping = 0.0;
@@ -118,20 +84,6 @@ void DemModel::runBondKernel(double dt)
 
 namespace {
 
-template <class Arrays>
-ContactItemOutputs itemOutputs(Arrays& items)
-{
-    ContactItemOutputs o;
-    o.tangential_spring = items.tangential_spring.data();
-    o.last_normal = items.last_normal.data();
-    o.elastic_energy = items.elastic_energy.data();
-    o.damping_power = items.damping_power.data();
-    o.friction_dissipation = items.friction_dissipation.data();
-    o.status = items.status.data();
-    o.stiffness = items.stiffness.data();
-    return o;
-}
-
 // Sums over contact items in item order (deterministic); returns the active count.
 template <class Arrays>
 int sumContactEnergies(const Arrays& items, DemEnergies& energies, double& damping_power, int& intersections)
@@ -155,43 +107,22 @@ void DemModel::runContactKernels(double dt)
     PairKernelArgs pa;
     pa.constants = rock_rock_;
     pa.dt = dt;
-    pa.n_pairs = pairs_.size();
     pa.cells = cellView();
-    pa.intact_bonds = interfaces_.intact_bonds.data();
-    pa.bond_offset = interfaces_.bond_offset.data();
-    pa.cell_a = pairs_.cell_a.data();
-    pa.cell_b = pairs_.cell_b.data();
-    pa.interface = pairs_.interface.data();
-    pa.separation_margin = pairs_.separation_margin.data();
-    pa.seat = pairs_.seat.data();
-    pa.items.tangential_spring = pairs_.tangential_spring.data();
-    pa.items.last_normal = pairs_.last_normal.data();
-    pa.items.status = pairs_.status.data();  // energies: block sums
-    pa.items.stiffness = pairs_.stiffness.data();
-    pa.force_on_b = pairs_.force_on_b.data();
-    pa.point_or_torque = pairs_.point_or_torque.data();
+    viewPairArrays(pa, interfaces_, pairs_);
     pa.patch = parameters_.cell_contact_patch;
     pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
     pa.block_sums = pair_block_sums_.data();
-    contact_runners_.pairs(pa);
+    parameters_.contact_law->runPairs(pa);
 
     WallKernelArgs wa;
     wa.constants = rock_steel_;
     wa.dt = dt;
-    wa.n_items = wall_items_.size();
     wa.cells = pa.cells;
     wa.walls = wall_poses_.data();
     wa.triangle_vertices = triangle_vertices_.data();
     wa.triangle_features = triangle_features_.data();
-    wa.item_cell = wall_items_.cell.data();
-    wa.item_wall = wall_items_.wall.data();
-    wa.item_triangle_offset = wall_items_.triangle_offset.data();
-    wa.item_triangles = wall_items_.triangles.data();
-    wa.items = itemOutputs(wall_items_);
-    wa.force_on_cell = wall_items_.force_on_cell.data();
-    wa.torque_on_cell = wall_items_.torque_on_cell.data();
-    wa.wall_power = wall_items_.wall_power.data();
-    contact_runners_.walls(wa);
+    viewWallItemArrays(wa, wall_items_);
+    parameters_.contact_law->runWalls(wa);
 
     energies_.contact_elastic = 0.0;
     counters_.core_intersections = 0;
@@ -231,30 +162,10 @@ GatherArgs DemModel::gatherArgs()
 {
     GatherArgs a;
     a.gravity = parameters_.gravity;
-    a.mass = cells_.mass.data();
-    a.interface_offset = cell_interface_offset_.data();
-    a.interface_entries = cell_interfaces_.data();
-    a.interface_force_on_i = interfaces_.force_on_i.data();
-    a.interface_torque_on_i = interfaces_.torque_on_i.data();
-    a.interface_torque_on_j = interfaces_.torque_on_j.data();
-    a.pair_offset = cell_pair_offset_.data();
-    a.pair_entries = cell_pairs_.data();
-    a.pair_force_on_b = pairs_.force_on_b.data();
-    a.pair_point_or_torque = pairs_.point_or_torque.data();
     a.pair_torques = parameters_.cell_contact_patch;
-    a.pair_cell_b = pairs_.cell_b.data();
-    a.position = cells_.position.data();
-    a.wall_item_offset = cell_wall_item_offset_.data();
-    a.wall_force_on_cell = wall_items_.force_on_cell.data();
-    a.wall_torque_on_cell = wall_items_.torque_on_cell.data();
-    a.force = cells_.force.data();
-    a.torque = cells_.torque.data();
-    a.pair_stiffness = pairs_.stiffness.data();
-    a.wall_stiffness = wall_items_.stiffness.data();
-    a.principal_inertia = cells_.principal_inertia.data();
-    a.bounding_radius = cells_.bounding_radius.data();
     contact_frequency2_.resize(cells_.size());
-    a.contact_frequency2 = contact_frequency2_.data();
+    const GatherLists lists = gatherLists();
+    viewGatherArrays(a, cells_, interfaces_, pairs_, wall_items_, lists, contact_frequency2_);
     return a;
 }
 

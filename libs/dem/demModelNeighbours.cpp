@@ -84,16 +84,8 @@ void DemModel::rebuildNeighbourLists()
     }
     // Most near pairs are still bonded and left out: give back what was reserved for them
     // (about half the contact pairs' memory in an intact specimen).
-    for (auto* list : {&next.cell_a, &next.cell_b, &next.interface}) list->shrink_to_fit();
-    next.tangential_spring.shrink_to_fit();
-    next.last_normal.shrink_to_fit();
-    next.seat.shrink_to_fit();
-    const std::size_t m = next.cell_a.size();
-    next.separation_margin.assign(m, 0.0f);
-    next.force_on_b.assign(m, Vec3{});
-    next.point_or_torque.assign(m, Vec3{});
-    next.status.assign(m, contactNone);
-    next.stiffness.assign(m, 0.0f);
+    shrinkFields(next);
+    resizeFields(next, next.cell_a.size());  // the rest: margins, forces, status and stiffness zero
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
     counters_.contact_pairs_listed = pairs_.size();
@@ -144,15 +136,7 @@ void DemModel::buildWallItems()
         }
         cell_wall_item_offset_[c + 1] = static_cast<int>(next.cell.size());
     }
-    const std::size_t m = next.cell.size();
-    next.force_on_cell.assign(m, Vec3{});
-    next.torque_on_cell.assign(m, Vec3{});
-    next.elastic_energy.assign(m, 0.0);
-    next.damping_power.assign(m, 0.0);
-    next.friction_dissipation.assign(m, 0.0);
-    next.wall_power.assign(m, 0.0);
-    next.status.assign(m, contactNone);
-    next.stiffness.assign(m, 0.0f);
+    resizeFields(next, next.cell.size());  // the rest: forces, energies, status and stiffness zero
     wall_items_ = std::move(next);
 }
 

@@ -10,7 +10,7 @@ namespace rockfrac {
 
 namespace {
 
-void requireSize(std::size_t got, int expected, const char* what)
+void requireSize(std::size_t got, int expected, const std::string& what)
 {
     if (static_cast<int>(got) != expected) {
         std::ostringstream message;
@@ -47,15 +47,39 @@ void DemModel::setCellForces(const std::vector<Vec3>& force, const std::vector<V
     forces_valid_ = true;
 }
 
+void DemModel::setCellState(const CellArrays& state)
+{
+    forEachField<restartField, derivedField>(
+        [&](const auto& field, auto& mine, const auto& given) {
+            requireSize(given.size(), cells_.size(), entryName<CellArrays>(field));
+            mine = given;
+        },
+        cells_, state);
+    lists_valid_ = forces_valid_ = false;
+    rebase_energy_ = true;
+}
+
+void DemModel::setCellForces(const CellArrays& state)
+{
+    bool given = false;  // none given: nothing to set; some: each must match
+    forEachField<restartField | derivedField>(
+        [&](const auto&, const auto& v) { given = given || !v.empty(); }, state);
+    if (!given) return;
+    forEachField<restartField | derivedField>(
+        [&](const auto& field, auto& mine, const auto& v) {
+            requireSize(v.size(), cells_.size(), entryName<CellArrays>(field));
+            mine = v;
+        },
+        cells_, state);
+    forces_valid_ = true;
+}
+
 void DemModel::setBondHistory(const BondArrays& history)
 {
     const int n = bonds_.size();
-    requireSize(history.stage.size(), n, "bond stages");
-    requireSize(history.onset_displacement.size(), n, "bond onset displacements");
-    requireSize(history.onset_stress.size(), n, "bond onset stresses");
-    requireSize(history.rupture_displacement.size(), n, "bond rupture displacements");
-    requireSize(history.max_displacement.size(), n, "bond maximum displacements");
-    requireSize(history.damage.size(), n, "bond damage");
+    forEachField<restartField>(
+        [&](const auto& field, const auto& v) { requireSize(v.size(), n, entryName<BondArrays>(field)); },
+        history);
     bonds_.stage = history.stage;
     std::vector<BondSoftening> per_bond(n);
     for (int b = 0; b < n; ++b) {

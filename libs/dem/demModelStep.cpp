@@ -6,6 +6,7 @@
 #include "dem/cellKernels.hpp"
 #include "dem/demModel.hpp"
 #include "dem/demModelDetail.hpp"
+#include "dem/kernelViews.hpp"
 
 namespace rockfrac {
 
@@ -13,18 +14,7 @@ using demDetail::cell_block_size;
 
 IntegrationArgs DemModel::integrationArgs()
 {
-    IntegrationArgs a;
-    a.gravity = parameters_.gravity;
-    a.mass = cells_.mass.data();
-    a.principal_inertia = cells_.principal_inertia.data();
-    a.force = cells_.force.data();
-    a.torque = cells_.torque.data();
-    a.rotation = rotation_.data();
-    a.position = cells_.position.data();
-    a.velocity = cells_.velocity.data();
-    a.orientation = cells_.orientation.data();
-    a.angular_velocity = cells_.angular_velocity.data();
-    return a;
+    return integrationView(cells_, rotation_, parameters_.gravity);
 }
 
 // First half kick, drift and rotation update (kickDriftCell), gravity's work summed per block.
@@ -106,14 +96,17 @@ void DemModel::updateStatus(int non_finite_cell)
                                                 std::fabs(e.wall_work) + std::fabs(e.gravity_work));
     status_.energy_scale = energy_scale_;
     status_.energy_error = e.balance() - initial_balance_;
-    // Below the fracture energy of one average bond the balance is round-off
+    // Below the energy one average bond releases when it breaks the balance is round-off
     // (a plate that has just touched a vertex): the growth check starts above it.
     if (energy_floor_ == 0.0) {
-        double area = 0.0;
-        for (int k = 0; k < interfaces_.size(); ++k)
-            area += interfaces_.bond_area[k] * (interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k]);
+        double area = 0.0, length = 0.0;
+        for (int k = 0; k < interfaces_.size(); ++k) {
+            const int n = interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k];
+            area += interfaces_.bond_area[k] * n;
+            length += (interfaces_.length_i[k] + interfaces_.length_j[k]) * n;
+        }
         const int n_bonds = std::max(1, bonds_.size());
-        energy_floor_ = std::max(1e-300, parameters_.fracture_energy_mode_I * area / n_bonds);
+        energy_floor_ = std::max(1e-300, parameters_.bond_law->energyFloor(area, n_bonds, length / n_bonds));
     }
     if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
         status_.code = DemStatusCode::nonFiniteState;

@@ -10,42 +10,11 @@ namespace rockfrac {
 
 namespace {
 
-template <class T>
-std::size_t bytes(const std::vector<T>& v)
-{
-    return v.capacity() * sizeof(T);
-}
-
 void requireCount(std::size_t got, int expected)
 {
     if (static_cast<int>(got) != expected)
         throw UserError("removeCells: the mask has " + std::to_string(got) + " entries for " +
                         std::to_string(expected) + " cells");
-}
-
-// Keep the entries whose flag is set, in order.
-template <class T>
-void keepFlagged(std::vector<T>& v, const std::vector<char>& keep)
-{
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (keep[i]) v[out++] = v[i];
-    v.resize(out);
-}
-
-// Keep the CSR ranges [offset[i], offset[i+1]) whose flag is set, in order.
-template <class T>
-void keepFlaggedRanges(std::vector<int>& offset, std::vector<T>& values, const std::vector<char>& keep)
-{
-    std::vector<int> kept_offset(1, 0);
-    std::vector<T> kept;
-    for (std::size_t i = 0; i + 1 < offset.size(); ++i) {
-        if (!keep[i]) continue;
-        kept.insert(kept.end(), values.begin() + offset[i], values.begin() + offset[i + 1]);
-        kept_offset.push_back(static_cast<int>(kept.size()));
-    }
-    offset = std::move(kept_offset);
-    values = std::move(kept);
 }
 
 }  // namespace
@@ -65,22 +34,7 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     const double energy_before = energies_.kinetic() + energies_.stored();
 
     // Cells, with their core vertex and anchor node ranges.
-    CellArrays& c = cells_;
-    keepFlaggedRanges(c.core_vertex_offset, c.core_vertices, keep_cell);
-    keepFlaggedRanges(c.core_edge_offset, c.core_edges, keep_cell);
-    keepFlaggedRanges(c.core_plane_offset, c.core_planes, keep_cell);
-    keepFlaggedRanges(c.anchor_node_offset, c.anchor_nodes, keep_cell);
-    keepFlagged(c.position, keep_cell);
-    keepFlagged(c.velocity, keep_cell);
-    keepFlagged(c.orientation, keep_cell);
-    keepFlagged(c.angular_velocity, keep_cell);
-    keepFlagged(c.force, keep_cell);
-    keepFlagged(c.torque, keep_cell);
-    keepFlagged(c.mass, keep_cell);
-    keepFlagged(c.principal_inertia, keep_cell);
-    keepFlagged(c.dilation_radius, keep_cell);
-    keepFlagged(c.bounding_radius, keep_cell);
-    keepFlagged(c.initial_bond_count, keep_cell);
+    keepFlaggedFields(cells_, keep_cell);
 
     // Interfaces and their bonds: kept when both cells stay (a bond to a removed cell
     // goes with it). Monotone renumbering keeps the (cell_i, cell_j) order.
@@ -106,23 +60,9 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     f.bond_offset = std::move(bond_offset);
     bonds_.softening = std::move(softening);
     keepFlagged(f.softening_slot, keep_face);
-    keepFlagged(f.cell_i, keep_face);
-    keepFlagged(f.cell_j, keep_face);
-    keepFlagged(f.intact_bonds, keep_face);
-    keepFlagged(f.normal_i, keep_face);
-    keepFlagged(f.normal_j, keep_face);
-    keepFlagged(f.length_i, keep_face);
-    keepFlagged(f.length_j, keep_face);
-    keepFlagged(f.bond_area, keep_face);
-    keepFlagged(f.damping_beta, keep_face);
-    if (!f.strength_scale.empty()) keepFlagged(f.strength_scale, keep_face);
-    keepFlagged(f.force_on_i, keep_face);
-    keepFlagged(f.torque_on_i, keep_face);
-    keepFlagged(f.torque_on_j, keep_face);
+    keepFlaggedFields(f, keep_face);
     BondStorage& b = bonds_;
-    keepFlagged(b.node_i, keep_bond);
-    keepFlagged(b.node_j, keep_bond);
-    keepFlagged(b.stage, keep_bond);
+    keepFlaggedFields(b, keep_bond);
     counters_.bonds = b.size();
 
     // Contact histories: pairs and wall items of remaining cells, renumbered (the
@@ -139,42 +79,14 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
         p.cell_b[k] = new_index[p.cell_b[k]];
         if (p.interface[k] >= 0) p.interface[k] = new_face[p.interface[k]];
     }
-    keepFlagged(p.cell_a, keep_pair);
-    keepFlagged(p.cell_b, keep_pair);
-    keepFlagged(p.interface, keep_pair);
-    keepFlagged(p.tangential_spring, keep_pair);
-    keepFlagged(p.last_normal, keep_pair);
-    keepFlagged(p.separation_margin, keep_pair);
-    keepFlagged(p.seat, keep_pair);
-    keepFlagged(p.force_on_b, keep_pair);
-    keepFlagged(p.point_or_torque, keep_pair);
-    keepFlagged(p.status, keep_pair);
-    keepFlagged(p.stiffness, keep_pair);
+    keepFlaggedFields(p, keep_pair);
     WallContactArrays& w = wall_items_;
     std::vector<char> keep_item(w.size());
-    std::vector<int> triangle_offset(1, 0), triangles;
     for (int k = 0; k < w.size(); ++k) {
         keep_item[k] = keep_cell[w.cell[k]];
-        if (!keep_item[k]) continue;
-        w.cell[k] = new_index[w.cell[k]];
-        triangles.insert(triangles.end(), w.triangles.begin() + w.triangle_offset[k],
-                         w.triangles.begin() + w.triangle_offset[k + 1]);
-        triangle_offset.push_back(static_cast<int>(triangles.size()));
+        if (keep_item[k]) w.cell[k] = new_index[w.cell[k]];
     }
-    w.triangle_offset = std::move(triangle_offset);
-    w.triangles = std::move(triangles);
-    keepFlagged(w.cell, keep_item);
-    keepFlagged(w.wall, keep_item);
-    keepFlagged(w.tangential_spring, keep_item);
-    keepFlagged(w.last_normal, keep_item);
-    keepFlagged(w.force_on_cell, keep_item);
-    keepFlagged(w.torque_on_cell, keep_item);
-    keepFlagged(w.elastic_energy, keep_item);
-    keepFlagged(w.damping_power, keep_item);
-    keepFlagged(w.friction_dissipation, keep_item);
-    keepFlagged(w.wall_power, keep_item);
-    keepFlagged(w.status, keep_item);
-    keepFlagged(w.stiffness, keep_item);
+    keepFlaggedFields(w, keep_item);
 
     buildIncidence();
     energy_floor_ = 0.0;
@@ -190,58 +102,36 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
 
 void DemModel::shrinkToFit()
 {
-    CellArrays& c = cells_;
-    c.core_vertices.shrink_to_fit();
-    c.core_vertex_offset.shrink_to_fit();
-    c.core_edges.shrink_to_fit();
-    c.core_edge_offset.shrink_to_fit();
-    c.core_planes.shrink_to_fit();
-    c.core_plane_offset.shrink_to_fit();
-    InterfaceArrays& f = interfaces_;
-    for (auto* v : {&f.cell_i, &f.cell_j, &f.bond_offset, &f.intact_bonds}) v->shrink_to_fit();
-    for (auto* v : {&f.normal_i, &f.normal_j}) v->shrink_to_fit();
-    for (auto* v : {&f.length_i, &f.length_j, &f.bond_area, &f.damping_beta}) v->shrink_to_fit();
-    f.softening_slot.shrink_to_fit();
-    c.anchor_node_offset.shrink_to_fit();
-    c.anchor_nodes.shrink_to_fit();
-    bonds_.node_i.shrink_to_fit();
-    bonds_.node_j.shrink_to_fit();
-    bonds_.stage.shrink_to_fit();
+    shrinkFields(cells_);
+    shrinkFields(interfaces_);
+    shrinkFields(bonds_);
 }
 
 DemMemoryBytes DemModel::memoryUse() const
 {
     DemMemoryBytes m;
-    const CellArrays& c = cells_;
-    m.cells = bytes(c.position) + bytes(c.velocity) + bytes(c.orientation) + bytes(c.angular_velocity) +
-              bytes(c.force) + bytes(c.torque) + bytes(c.mass) + bytes(c.principal_inertia) +
-              bytes(c.dilation_radius) + bytes(c.bounding_radius) + bytes(c.initial_bond_count) +
-              bytes(rotation_) + bytes(angular_velocity_world_) + bytes(position_at_build_);
-    m.cores = bytes(c.core_vertex_offset) + bytes(c.core_vertices) + bytes(c.core_edge_offset) +
-              bytes(c.core_edges) + bytes(c.core_plane_offset) + bytes(c.core_planes);
-    m.anchor_nodes = bytes(c.anchor_node_offset) + bytes(c.anchor_nodes);
-    const InterfaceArrays& f = interfaces_;
-    m.interfaces = bytes(f.cell_i) + bytes(f.cell_j) + bytes(f.bond_offset) + bytes(f.intact_bonds) +
-                   bytes(f.normal_i) + bytes(f.normal_j) + bytes(f.length_i) + bytes(f.length_j) +
-                   bytes(f.bond_area) + bytes(f.damping_beta) + bytes(f.strength_scale) +
-                   bytes(f.force_on_i) + bytes(f.torque_on_i) + bytes(f.torque_on_j) +
-                   bytes(f.softening_slot);
-    const BondStorage& b = bonds_;
-    m.bonds = bytes(b.node_i) + bytes(b.node_j) + bytes(b.stage);
-    m.softening = bytes(b.softening);
-    const ContactPairArrays& p = pairs_;
-    m.pairs = bytes(p.cell_a) + bytes(p.cell_b) + bytes(p.interface) + bytes(p.tangential_spring) +
-              bytes(p.last_normal) + bytes(p.separation_margin) + bytes(p.seat) + bytes(p.force_on_b) +
-              bytes(p.point_or_torque) + bytes(p.status) + bytes(p.stiffness);
-    const WallContactArrays& w = wall_items_;
-    m.wall_items = bytes(w.cell) + bytes(w.wall) + bytes(w.triangle_offset) + bytes(w.triangles) +
-                   bytes(w.tangential_spring) + bytes(w.last_normal) + bytes(w.force_on_cell) +
-                   bytes(w.torque_on_cell) + bytes(w.elastic_energy) + bytes(w.damping_power) +
-                   bytes(w.friction_dissipation) + bytes(w.wall_power) + bytes(w.status) +
-                   bytes(w.stiffness) + bytes(contact_frequency2_) + bytes(triangle_vertices_) +
-                   bytes(triangle_features_);
-    m.lists = bytes(cell_interface_offset_) + bytes(cell_interfaces_) + bytes(cell_pair_offset_) +
-              bytes(cell_pairs_) + bytes(cell_wall_item_offset_) + bytes(neighbour_interface_);
+    m.anchor_nodes = capacityBytes(ranged(cells_.anchor_node_offset, cells_.anchor_nodes));
+    m.cores = fieldBytes<rangedField>(cells_) - m.anchor_nodes;
+    m.cells = fieldBytes<0u, rangedField>(cells_) + capacityBytes(rotation_) +
+              capacityBytes(angular_velocity_world_) + capacityBytes(position_at_build_);
+    m.interfaces = fieldBytes(interfaces_);
+    m.bonds = fieldBytes<0u, poolField>(bonds_);
+    m.softening = fieldBytes<poolField>(bonds_);
+    m.pairs = fieldBytes(pairs_);
+    // Wall items, and the walls: states, poses, triangles, grids and what the last list
+    // build saw of them.
+    m.wall_items = fieldBytes(wall_items_) + capacityBytes(contact_frequency2_) +
+                   capacityBytes(triangle_vertices_) + capacityBytes(triangle_features_) +
+                   capacityBytes(walls_) + capacityBytes(wall_poses_) + capacityBytes(triangle_grids_) +
+                   capacityBytes(wall_origin_at_build_) + capacityBytes(wall_orientation_at_build_) +
+                   capacityBytes(wall_extent_);
+    for (const TriangleGrid& grid : triangle_grids_) m.wall_items += grid.memoryBytes();
+    // Gather and neighbour lists, and the per-block partial sums.
+    m.lists = capacityBytes(cell_interface_offset_) + capacityBytes(cell_interfaces_) +
+              capacityBytes(cell_pair_offset_) + capacityBytes(cell_pairs_) +
+              capacityBytes(cell_wall_item_offset_) + capacityBytes(neighbour_interface_) +
+              capacityBytes(bond_block_sums_) + capacityBytes(pair_block_sums_) +
+              capacityBytes(cell_block_sums_);
     return m;
 }
 

@@ -18,7 +18,7 @@ struct BondSystem {
     const CellArrays& cells;
     const InterfaceArrays& faces;
     const BondStorage& bonds;
-    const BondMaterial& material;
+    double normal_modulus, shear_modulus;  // k_n, k_t [Pa]
     std::vector<Mat3> rotation;
 
     // (fu, ftheta) = K x (the gradient of the bond energy); x^T K_k x per interface in energy.
@@ -41,8 +41,8 @@ struct BondSystem {
                     rotation[j] * cells.anchor_nodes[cells.anchor_node_offset[j] + bonds.node_j[b]];
                 const Vec3 d = (u[j] + cross(theta[j], rj)) - (u[i] + cross(theta[i], ri));
                 const double dn = dot(d, normal);
-                const Vec3 f = scale * (material.normal_modulus * dn * normal +
-                                        material.shear_modulus * (d - dn * normal));  // K_b d
+                const Vec3 f =
+                    scale * (normal_modulus * dn * normal + shear_modulus * (d - dn * normal));  // K_b d
                 fu[j] += f;
                 ftheta[j] += cross(rj, f);
                 fu[i] -= f;
@@ -59,7 +59,8 @@ CriticalTimeStep DemModel::criticalTimeStep() const
 {
     CriticalTimeStep result;
     const int n = cells_.size();
-    BondSystem system{cells_, interfaces_, bonds_, bond_material_, {}};
+    const BondLawModel& law = *parameters_.bond_law;
+    BondSystem system{cells_, interfaces_, bonds_, law.normalModulus(), law.shearModulus(), {}};
     system.rotation.resize(n);
     for (int c = 0; c < n; ++c) system.rotation[c] = rotationMatrix(cells_.orientation[c]);
     // World inverse inertia R I^-1 R^T applied to a vector.
@@ -78,7 +79,7 @@ CriticalTimeStep DemModel::criticalTimeStep() const
     std::vector<double> row_u(n, 0.0), row_theta(n, 0.0);
     for (int k = 0; k < interfaces_.size(); ++k) {
         const int i = interfaces_.cell_i[k], j = interfaces_.cell_j[k];
-        const double stiffness = bond_material_.normal_modulus * interfaces_.bond_area[k] /
+        const double stiffness = law.normalModulus() * interfaces_.bond_area[k] /
                                  (interfaces_.length_i[k] + interfaces_.length_j[k]);
         const double mi = cells_.mass[i], mj = cells_.mass[j];
         const Vec3 Ii = cells_.principal_inertia[i], Ij = cells_.principal_inertia[j];

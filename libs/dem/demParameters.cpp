@@ -52,16 +52,9 @@ void DemParameters::validate() const
     requirePositive(rock_youngs_modulus, "rock Young's modulus");
     requireRange(rock_poisson_ratio, 0.0, 0.49, "rock Poisson's ratio");
     requirePositive(rock_density, "rock density");
-    requirePositive(bond_youngs_modulus, "bond Young's modulus");
-    requireRange(bond_poisson_ratio, 0.0, 0.49, "bond Poisson's ratio");
-    requirePositive(bond_tensile_strength, "bond tensile strength");
-    requirePositive(bond_cohesion, "bond cohesion");
-    requireRange(bond_friction, 0.0, 1e3, "bond friction coefficient");
-    requirePositive(fracture_energy_mode_I, "mode I fracture energy G_I");
-    requirePositive(fracture_energy_mode_II, "mode II fracture energy G_II");
-    requirePositive(bk_exponent, "Benzeggagh-Kenane exponent");
+    if (!bond_law) throw UserError("DEM parameters: no bond law");
+    if (!contact_law) throw UserError("DEM parameters: no contact law");
     requireRange(bond_damping, 0.0, 1e3, "bond damping coefficient");
-    requireRange(rupture_tolerance, 0.0, 1.0, "rupture tolerance");
     requireRange(bond_size_effect_modulus, 0.0, 1e3, "Weibull modulus of the bond size effect");
     if (bond_size_effect_modulus > 0.0)
         requirePositive(bond_size_effect_reference_area, "reference area of the bond size effect");

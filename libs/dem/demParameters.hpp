@@ -2,12 +2,16 @@
 // Parameters of the bonded Voronoi DEM (physics.md §3.3–3.4).
 //
 // A plain struct that the application fills from constant/rockProperties and
-// constant/loading. The defaults are the paper's values (Table 2, and Table 3
-// for limestone) so that a test or a study states only what it changes; the
-// dictionaries remain the place where a case records its parameters.
+// constant/loading. The defaults are the paper's values (Table 2) so that a test or a
+// study states only what it changes; the dictionaries remain the place where a case
+// records its parameters. The bond and contact laws are selected models that own their
+// coefficients (bondLawModel.hpp, contactLaw.hpp); what every law shares is here.
+#include <memory>
 #include <string>
 
 #include "core/vec3.hpp"
+#include "dem/bondLawModel.hpp"
+#include "dem/contactLaw.hpp"
 
 namespace rockfrac {
 
@@ -28,20 +32,11 @@ struct DemParameters {
     double rock_poisson_ratio = 0.21;   // [-]
     double rock_density = 2540.0;       // [kg/m^3]
 
-    // Bonds (Eqs. 5–20; Table 2 and Table 3 limestone).
-    std::string bond_law = "voronoiQNSC";
-    double bond_youngs_modulus = 46e9;      // E of Eq. 7 [Pa]
-    double bond_poisson_ratio = 0.25;       // nu of Eqs. 7–8 [-]
-    double bond_tensile_strength = 28e6;    // sigma-bar of Eq. 12 [Pa]
-    double bond_cohesion = 42e6;            // C of tau-bar = C - mu sigma [Pa]
-    double bond_friction = 0.8;             // mu = tan(phi) of tau-bar [-]
-    double fracture_energy_mode_I = 10.0;   // G_I [N/m]
-    double fracture_energy_mode_II = 10.0;  // G_II [N/m]
-    double bk_exponent = 2.0;               // eta of Benzeggagh–Kenane [-]
-    double bond_damping = 1e-4;             // beta: seconds or fraction, see damping_reading
+    // Bonds (Eqs. 5–20): the law, which owns its coefficients (bond/<model>), and what
+    // every law shares: the dashpot and the size effect.
+    std::shared_ptr<const BondLawModel> bond_law = defaultBondLaw();
+    double bond_damping = 1e-4;  // beta: seconds or fraction, see damping_reading
     DampingReading damping_reading = DampingReading::absolute;
-    // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
-    double rupture_tolerance = 1e-6;  // [-], relative to d_e0
     // Weibull size effect of the bond strength (docs/theory-dem.md §3, an option beyond the
     // paper): sigma-bar and C of an interface of area A are scaled by (A_ref / A)^(1/m), the
     // weakest-link scaling the FEM applies to its elements, so that a mesh of larger cells
@@ -52,7 +47,7 @@ struct DemParameters {
     double bondSizeFactor(double interface_area) const;
 
     // Contacts (Hertz–Mindlin, Table 2).
-    std::string contact_law = "hertzMindlin";
+    std::shared_ptr<const ContactLawModel> contact_law = defaultContactLaw();
     // Cell–cell contact: false = one Hertz point at the GJK closest points of the cores (the
     // paper's); true = a patch of feature pairs, seated at a face neighbour's first broken
     // bond, which keeps the energy of pressed fragments (docs/theory-dem.md §6).

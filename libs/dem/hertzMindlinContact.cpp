@@ -2,11 +2,17 @@
 
 namespace rockfrac {
 
-void runHertzMindlinPairs(const PairKernelArgs& args)
+const char* HertzMindlinContactLaw::type() const
+{
+    return "hertzMindlin";
+}
+
+void HertzMindlinContactLaw::runPairs(const PairKernelArgs& args) const
 {
     runPairKernel<HertzMindlinLaw>(args);
 }
-void runHertzMindlinWalls(const WallKernelArgs& args)
+
+void HertzMindlinContactLaw::runWalls(const WallKernelArgs& args) const
 {
     runWallKernel<HertzMindlinLaw>(args);
 }

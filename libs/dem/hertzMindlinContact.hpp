@@ -134,7 +134,13 @@ struct HertzMindlinLaw {
     }
 };
 
-void runHertzMindlinPairs(const PairKernelArgs& args);
-void runHertzMindlinWalls(const WallKernelArgs& args);
+// The host side (docs/models/contact/hertzMindlin.md): no coefficients of its own (E* and G*
+// come from rock/ and steel/, friction and restitution from the pairings).
+class HertzMindlinContactLaw final : public ContactLawModel {
+public:
+    const char* type() const override;
+    void runPairs(const PairKernelArgs& args) const override;
+    void runWalls(const WallKernelArgs& args) const override;
+};
 
 }  // namespace rockfrac

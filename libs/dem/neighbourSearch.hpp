@@ -1,6 +1,7 @@
 #pragma once
 // Broad phase: uniform grids for cell–cell pairs and for the triangles of a
 // rigid surface. Built on the host at neighbour-list rebuilds only.
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,11 @@ public:
 
     // Triangles whose bounding box comes within radius of centre (sorted, unique).
     void query(const Vec3& centre, double radius, std::vector<int>& found) const;
+    // What its bins hold [bytes] (capacities).
+    std::size_t memoryBytes() const
+    {
+        return bin_offset_.capacity() * sizeof(int) + bin_triangles_.capacity() * sizeof(int);
+    }
 
 private:
     void binRange(const Vec3& low, const Vec3& high, int lo[3], int hi[3]) const;

@@ -4,15 +4,38 @@
 // onset of damage, linear softening in the effective displacement, no damage
 // in compression, and a stiffness-proportional dashpot.
 #include <cmath>
+#include <string>
 
-#include "dem/bondLaw.hpp"
+#include "dem/bondLawModel.hpp"
 
 namespace rockfrac {
 
+class Dictionary;
+
 struct VoronoiQnscLaw {
+    // The coefficients every bond of a run shares.
+    struct Coefficients {
+        double normal_modulus = 0.0;      // k_n = E(1-nu)/((1+nu)(1-2nu))  (Eq. 7) [Pa]
+        double shear_modulus = 0.0;       // k_t = E/(2(1+nu))  (Eq. 8) [Pa]
+        double tensile_strength = 0.0;    // sigma-bar [Pa]
+        double cohesion = 0.0;            // C [Pa]
+        double friction = 0.0;            // mu [-]
+        double fracture_energy_I = 0.0;   // G_I [N/m]
+        double fracture_energy_II = 0.0;  // G_II [N/m]
+        double bk_exponent = 2.0;         // eta [-]
+        double rupture_tolerance = 0.0;   // Remark 1.1, relative to d_e0
+    };
+
+    // An interface `factor` times as strong: sigma-bar and C scaled (size effect, model effects).
+    RF_HD static void scaleStrength(Coefficients& m, double factor)
+    {
+        m.tensile_strength *= factor;
+        m.cohesion *= factor;
+    }
+
     // QNSC (Eq. 12) with tau-bar = C - mu sigma; >= 1 at or beyond the onset.
     // A non-positive Mohr–Coulomb strength (sigma >= C/mu) counts as beyond it.
-    RF_HD static double qnscIndex(const BondMaterial& m, double sigma, double tau)
+    RF_HD static double qnscIndex(const Coefficients& m, double sigma, double tau)
     {
         const double tensile = sigma > 0.0 ? sigma / m.tensile_strength : 0.0;
         const double shear_strength = m.cohesion - m.friction * sigma;
@@ -25,7 +48,7 @@ struct VoronoiQnscLaw {
     // exactly 1, assuming the bond was loaded along a straight path from zero
     // within the step (exact for monotonic proportional loading). The index is
     // increasing in s, so bisection converges to round-off.
-    RF_HD static double onsetFraction(const BondMaterial& m, double sigma, double tau)
+    RF_HD static double onsetFraction(const Coefficients& m, double sigma, double tau)
     {
         double low = 0.0, high = 1.0;
         for (int iteration = 0; iteration < 60; ++iteration) {
@@ -40,7 +63,7 @@ struct VoronoiQnscLaw {
 
     // Benzeggagh–Kenane: G_f = G_I + (G_II - G_I) (G_shear/G_total)^eta with the
     // mode mixity from the tractions at onset, G_shear/G_total = tau^2/(<sigma>^2 + tau^2).
-    RF_HD static double fractureEnergy(const BondMaterial& m, double sigma_onset, double tau_onset)
+    RF_HD static double fractureEnergy(const Coefficients& m, double sigma_onset, double tau_onset)
     {
         const double tensile = sigma_onset > 0.0 ? sigma_onset : 0.0;
         const double total = tensile * tensile + tau_onset * tau_onset;
@@ -50,7 +73,7 @@ struct VoronoiQnscLaw {
     }
 
     // Algorithm 1, steps 4–5 with Remarks 1.1–1.3. Returns the damage before this call.
-    RF_HD static double updateDamage(const BondMaterial& m, double sigma, double tau,
+    RF_HD static double updateDamage(const Coefficients& m, double sigma, double tau,
                                      double effective_displacement, BondHistory& h)
     {
         const double damage_before = h.damage;
@@ -82,7 +105,7 @@ struct VoronoiQnscLaw {
 
     // The QNSC onset test without square roots or divisions (the hot path of an
     // intact bond): (<sigma>/sigma-bar)^2 + tau^2/tau-bar^2 >= 1.
-    RF_HD static bool onsetReached(const BondMaterial& m, double sigma, double tau2)
+    RF_HD static bool onsetReached(const Coefficients& m, double sigma, double tau2)
     {
         const double shear_strength = m.cohesion - m.friction * sigma;
         if (shear_strength <= 0.0) return true;
@@ -90,7 +113,7 @@ struct VoronoiQnscLaw {
         return tau2 >= (1.0 - tensile * tensile) * shear_strength * shear_strength;
     }
 
-    RF_HD RF_FORCE_INLINE static BondOutput evaluate(const BondMaterial& m, const BondInput& in,
+    RF_HD RF_FORCE_INLINE static BondOutput evaluate(const Coefficients& m, const BondInput& in,
                                                      BondHistory& h)
     {
         BondOutput out;
@@ -122,26 +145,48 @@ struct VoronoiQnscLaw {
                 return out;
             }
         }
-        // Degraded stresses (Eqs. 16–17): no damage in compression.
-        const double intact = 1.0 - h.damage;
-        const double sigma = normal_opening < 0.0 ? sigma_trial : intact * sigma_trial;
-        const Vec3 shear_stress = (intact * m.shear_modulus * inverse_l) * shear_opening;  // tau t
-        // Dashpot (Eqs. 18–19) from the anchor points' relative velocity; it always
-        // opposes the relative motion (see docs/theory-dem.md for the sign).
-        const double normal_rate = dot(in.relative_velocity, in.normal) * inverse_l;  // eps-dot
-        const Vec3 shear_rate =
-            (in.relative_velocity - (normal_rate * l) * in.normal) * inverse_l;  // gamma-dot t
-        const double beta = in.damping_beta;
-        out.force_on_i = in.bond_area * ((sigma + beta * m.normal_modulus * normal_rate) * in.normal +
-                                         shear_stress + (beta * m.shear_modulus) * shear_rate);
-        out.strain_energy = 0.5 * in.bond_area * (sigma * normal_opening + dot(shear_stress, shear_opening));
-        out.damping_power =
-            in.bond_area * beta * l *
-            (m.normal_modulus * normal_rate * normal_rate + m.shear_modulus * norm2(shear_rate));
+        // Degraded stresses (Eqs. 16–17) and the dashpot (Eqs. 18–19).
+        elasticBondResponse(m.normal_modulus, m.shear_modulus, in, l, inverse_l, normal_opening,
+                            shear_opening, sigma_trial, h.damage, out);
         return out;
     }
 };
 
-void runVoronoiQnscBonds(const BondKernelArgs& args);
+// The host side: the law's coefficients from bond/voronoiQNSC (docs/models/bond/voronoiQNSC.md).
+class VoronoiQnscBondLaw final : public BondLawModel {
+public:
+    // What a user gives, with the paper's Table 2 values as defaults.
+    struct Parameters {
+        double youngs_modulus = 46e9;      // E of Eq. 7 [Pa]
+        double poisson_ratio = 0.25;       // nu of Eqs. 7–8 [-]
+        double tensile_strength = 28e6;    // sigma-bar of Eq. 12 [Pa]
+        double cohesion = 42e6;            // C of tau-bar = C - mu sigma [Pa]
+        double friction = 0.8;             // mu = tan(phi) of tau-bar [-]
+        double fracture_energy_I = 10.0;   // G_I [N/m]
+        double fracture_energy_II = 10.0;  // G_II [N/m]
+        double bk_exponent = 2.0;          // eta of Benzeggagh–Kenane [-]
+        // Remark 1.1: if d_f <= d_e0 then d_f = d_e0 (1 + rupture_tolerance).
+        double rupture_tolerance = 1e-6;  // [-]
+    };
+
+    VoronoiQnscBondLaw();  // the defaults of Parameters
+    explicit VoronoiQnscBondLaw(const Parameters& parameters);
+    // Reads bond/voronoiQNSC (units and bounds checked; unknown entries refused).
+    static Parameters read(const Dictionary& coefficients);
+
+    const Parameters& parameters() const { return parameters_; }
+    const VoronoiQnscLaw::Coefficients& coefficients() const { return coefficients_; }
+
+    const char* type() const override;
+    double normalModulus() const override;
+    double shearModulus() const override;
+    double energyFloor(double total_bond_area, int n_bonds, double mean_length) const override;
+    void run(const BondKernelArgs& args) const override;
+    std::string describe() const override;
+
+private:
+    Parameters parameters_;
+    VoronoiQnscLaw::Coefficients coefficients_;
+};
 
 }  // namespace rockfrac

@@ -4,61 +4,84 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
-#include "dem/bondLaw.hpp"
-#include "dem/contactKernels.hpp"
+#include "core/selector.hpp"
+#include "dem/bondLawModel.hpp"
+#include "dem/contactLaw.hpp"
 
 namespace rockfrac {
 
 // ---- Parameters ------------------------------------------------------------------
 
+namespace {
+
+// The names of a family's models followed by `others`: the entries a dictionary selecting
+// one of them may hold (each model's coefficients in its own sub-dictionary).
+std::vector<std::string> withModelNames(std::vector<std::string> others,
+                                        const std::vector<std::string>& models)
+{
+    others.insert(others.end(), models.begin(), models.end());
+    return others;
+}
+
+void readBond(const Dictionary& bond, DemParameters& p)
+{
+    requireKnownEntries(bond, withModelNames({"model", "damping", "sizeEffect"}, bondLawNames()),
+                        "a bond law's coefficients go in its own sub-dictionary, bond/<model> { ... }; "
+                        "docs/models/bond/");
+    p.bond_law = bondLaws().select(bond, "model");  // the errors name the file and line
+    if (bond.found("sizeEffect")) {
+        // Optional: the Weibull size effect of the bond strength (off when absent).
+        static const Dimensions area = Dimensions::fromUnits("m^2");
+        const Dictionary& size = bond.subDict("sizeEffect");
+        requireKnownEntries(size, {"weibullModulus", "referenceArea"});
+        p.bond_size_effect_modulus = size.getScalar("weibullModulus", Bounds::positive());
+        p.bond_size_effect_reference_area = size.getScalar("referenceArea", Bounds::positive(), &area);
+    }
+    const Dictionary& damping = bond.subDict("damping");
+    requireKnownEntries(damping, {"reading", "beta"});
+    p.damping_reading = dampingReadingFromName(damping.getWord("reading", {"absolute", "criticalFraction"}));
+    p.bond_damping = damping.getScalar("beta", Bounds::nonNegative());
+}
+
+void readContact(const Dictionary& contact, DemParameters& p)
+{
+    requireKnownEntries(contact,
+                        withModelNames({"model", "cellContact", "rockRock", "rockSteel"}, contactLawNames()));
+    p.contact_law = contactLaws().select(contact, "model");
+    // Optional: how two cells touch (point: the paper's single Hertz point; patch: feature pairs).
+    p.cell_contact_patch =
+        contact.found("cellContact") && contact.getWord("cellContact", {"point", "patch"}) == "patch";
+    const Dictionary& rockRock = contact.subDict("rockRock");
+    requireKnownEntries(rockRock, {"friction", "restitution"});
+    p.rock_rock_friction = rockRock.getScalar("friction", Bounds::nonNegative());
+    p.rock_rock_restitution = rockRock.getScalar("restitution", Bounds::open(0, 1.000001));
+    const Dictionary& rockSteel = contact.subDict("rockSteel");
+    requireKnownEntries(rockSteel, {"friction", "restitution"});
+    p.rock_steel_friction = rockSteel.getScalar("friction", Bounds::nonNegative());
+    p.rock_steel_restitution = rockSteel.getScalar("restitution", Bounds::open(0, 1.000001));
+}
+
+}  // namespace
+
 DemParameters readDemParameters(const Dictionary& d)
 {
     static const Dimensions pascal = Dimensions::fromUnits("Pa");
     static const Dimensions density = Dimensions::fromUnits("kg/m^3");
-    static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
 
     DemParameters p;
     const Dictionary& rock = d.subDict("rock");
+    requireKnownEntries(rock, {"E", "poissonRatio", "density"});
     p.rock_youngs_modulus = rock.getScalar("E", Bounds::positive(), &pascal);
     p.rock_poisson_ratio = rock.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
     p.rock_density = rock.getScalar("density", Bounds::positive(), &density);
 
     const Dictionary& steel = d.subDict("steel");
+    requireKnownEntries(steel, {"E", "poissonRatio"});
     p.steel_youngs_modulus = steel.getScalar("E", Bounds::positive(), &pascal);
     p.steel_poisson_ratio = steel.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
 
-    const Dictionary& bond = d.subDict("bond");
-    p.bond_law = bond.getWord("model", bondLawNames());  // the error names the file and line
-    p.bond_youngs_modulus = bond.getScalar("E", Bounds::positive(), &pascal);
-    p.bond_poisson_ratio = bond.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
-    p.bond_tensile_strength = bond.getScalar("tensileStrength", Bounds::positive(), &pascal);
-    p.bond_cohesion = bond.getScalar("cohesion", Bounds::positive(), &pascal);
-    p.bond_friction = bond.getScalar("frictionCoefficient", Bounds::nonNegative());
-    p.fracture_energy_mode_I = bond.getScalar("GI", Bounds::positive(), &energyPerArea);
-    p.fracture_energy_mode_II = bond.getScalar("GII", Bounds::positive(), &energyPerArea);
-    p.bk_exponent = bond.getScalarOrDefault("bkExponent", p.bk_exponent, Bounds::positive());
-    if (bond.found("sizeEffect")) {
-        // Optional: the Weibull size effect of the bond strength (off when absent).
-        static const Dimensions area = Dimensions::fromUnits("m^2");
-        const Dictionary& size = bond.subDict("sizeEffect");
-        p.bond_size_effect_modulus = size.getScalar("weibullModulus", Bounds::positive());
-        p.bond_size_effect_reference_area = size.getScalar("referenceArea", Bounds::positive(), &area);
-    }
-    const Dictionary& damping = bond.subDict("damping");
-    p.damping_reading = dampingReadingFromName(damping.getWord("reading", {"absolute", "criticalFraction"}));
-    p.bond_damping = damping.getScalar("beta", Bounds::nonNegative());
-
-    const Dictionary& contact = d.subDict("contact");
-    p.contact_law = contact.getWord("model", contactLawNames());
-    // Optional: how two cells touch (point: the paper's single Hertz point; patch: feature pairs).
-    p.cell_contact_patch =
-        contact.found("cellContact") && contact.getWord("cellContact", {"point", "patch"}) == "patch";
-    const Dictionary& rockRock = contact.subDict("rockRock");
-    p.rock_rock_friction = rockRock.getScalar("friction", Bounds::nonNegative());
-    p.rock_rock_restitution = rockRock.getScalar("restitution", Bounds::open(0, 1.000001));
-    const Dictionary& rockSteel = contact.subDict("rockSteel");
-    p.rock_steel_friction = rockSteel.getScalar("friction", Bounds::nonNegative());
-    p.rock_steel_restitution = rockSteel.getScalar("restitution", Bounds::open(0, 1.000001));
+    readBond(d.subDict("bond"), p);
+    readContact(d.subDict("contact"), p);
     p.validate();
     return p;
 }

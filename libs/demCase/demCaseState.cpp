@@ -1,4 +1,5 @@
 // bondedDemFoam case: the whole-state restart file <time>/demState.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,24 +16,92 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<double> quats(const std::vector<Quat>& q)
+// One array in the state file's types: doubles (quaternions as w, x, y, z), int64, bytes.
+void putArray(StateFile& s, const std::string& name, const std::vector<Vec3>& v)
+{
+    s.put(name, v);
+}
+void putArray(StateFile& s, const std::string& name, const std::vector<double>& v)
+{
+    s.put(name, v);
+}
+void putArray(StateFile& s, const std::string& name, const std::vector<Quat>& q)
 {
     std::vector<double> flat;
     flat.reserve(4 * q.size());
     for (const auto& v : q) flat.insert(flat.end(), {v.w, v.x, v.y, v.z});
-    return flat;
+    s.put(name, flat);
+}
+void putArray(StateFile& s, const std::string& name, const std::vector<int>& v)
+{
+    s.put(name, std::vector<std::int64_t>(v.begin(), v.end()));
+}
+void putArray(StateFile& s, const std::string& name, const std::vector<unsigned char>& v)
+{
+    s.put(name, std::vector<std::uint8_t>(v.begin(), v.end()));
 }
 
-template <class T>
-std::vector<std::int64_t> toInt64(const std::vector<T>& v)
+// count < 0: any length.
+void getArray(const StateFile& s, const std::string& name, long count, std::vector<Vec3>& v)
 {
-    return std::vector<std::int64_t>(v.begin(), v.end());
+    v = s.vectors(name, count);
+}
+void getArray(const StateFile& s, const std::string& name, long count, std::vector<double>& v)
+{
+    v = s.doubles(name, count);
+}
+void getArray(const StateFile& s, const std::string& name, long count, std::vector<Quat>& q)
+{
+    const auto& flat = s.doubles(name, count < 0 ? -1 : 4 * count);
+    q.resize(flat.size() / 4);
+    for (std::size_t c = 0; c < q.size(); ++c)
+        q[c] = {flat[4 * c], flat[4 * c + 1], flat[4 * c + 2], flat[4 * c + 3]};
+}
+void getArray(const StateFile& s, const std::string& name, long count, std::vector<int>& v)
+{
+    const auto& wide = s.integers(name, count);
+    v.assign(wide.begin(), wide.end());
+}
+void getArray(const StateFile& s, const std::string& name, long count, std::vector<unsigned char>& v)
+{
+    const auto& bytes = s.bytes(name, count);
+    v.assign(bytes.begin(), bytes.end());
 }
 
-template <class T>
-std::vector<T> fromInt64(const std::vector<std::int64_t>& v)
+// The group's restart arrays as "<entity>.<name>" (an empty optional array is not written).
+template <class Group>
+void putFields(StateFile& s, const Group& g)
 {
-    return std::vector<T>(v.begin(), v.end());
+    forEachField<restartField>(
+        [&](const auto& field, const auto& array) {
+            if constexpr ((flagsOf<decltype(field)> & optionalField) != 0u)
+                if (array.empty()) return;
+            putArray(s, entryName<Group>(field), array);
+        },
+        g);
+}
+
+// The group's restart arrays, count entries each (count < 0: as many as the first has).
+// Missing from the file: an optional array is neutral everywhere, a derived one stays
+// empty (recomputed; states written before it was kept), any other is an error.
+template <class Group>
+void getFields(const StateFile& s, Group& g, long count)
+{
+    forEachField<restartField>(
+        [&](const auto& field, auto& array) {
+            constexpr unsigned flags = flagsOf<decltype(field)>;
+            const std::string name = entryName<Group>(field);
+            if constexpr ((flags & optionalField) != 0u) {
+                if (!s.has(name)) {
+                    array.assign(static_cast<std::size_t>(std::max(count, 0L)), field.neutral);
+                    return;
+                }
+            }
+            if ((flags & derivedField) && !s.has(name)) return;
+            getArray(s, name, count, array);
+            if (count < 0) count = static_cast<long>(array.size());
+        },
+        g);
 }
 
 std::vector<double> energyArray(const DemEnergies& e)
@@ -63,40 +132,14 @@ void writeDemState(const fs::path& file, const DemModel& model, long step, doubl
                    bool loadingStarted)
 {
     StateFile s;
-    const CellArrays& cells = model.cells();
-    s.put("cell.position", cells.position);
-    s.put("cell.velocity", cells.velocity);
-    s.put("cell.orientation", quats(cells.orientation));
-    s.put("cell.angularVelocity", cells.angular_velocity);
-    // The forces of the last step: the continued run starts its next step with them,
-    // as the uninterrupted run does, instead of re-evaluating the dashpots at the
-    // end-of-step velocities (which would make the continuation differ).
-    s.put("cell.force", cells.force);
-    s.put("cell.torque", cells.torque);
-
-    const BondArrays& b = model.bonds();
-    s.put("bond.stage", std::vector<std::uint8_t>(b.stage.begin(), b.stage.end()));
-    s.put("bond.onsetDisplacement", b.onset_displacement);
-    s.put("bond.onsetStress", b.onset_stress);
-    s.put("bond.ruptureDisplacement", b.rupture_displacement);
-    s.put("bond.maxDisplacement", b.max_displacement);
-    s.put("bond.damage", b.damage);
-
-    const ContactPairArrays& p = model.contactPairs();
-    s.put("pair.cellA", toInt64(p.cell_a));
-    s.put("pair.cellB", toInt64(p.cell_b));
-    s.put("pair.interface", toInt64(p.interface));
-    s.put("pair.tangentialSpring", p.tangential_spring);
-    s.put("pair.lastNormal", p.last_normal);
-    if (!p.seat.empty()) s.put("pair.seat", p.seat);  // patch contacts only
-    s.put("pair.status", std::vector<std::uint8_t>(p.status.begin(), p.status.end()));
-
-    const WallContactArrays& w = model.wallContacts();
-    s.put("wallItem.cell", toInt64(w.cell));
-    s.put("wallItem.wall", toInt64(w.wall));
-    s.put("wallItem.tangentialSpring", w.tangential_spring);
-    s.put("wallItem.lastNormal", w.last_normal);
-    s.put("wallItem.status", std::vector<std::uint8_t>(w.status.begin(), w.status.end()));
+    // The restart arrays of each group (demState.hpp): the cells' state and the forces of
+    // the last step (the continued run starts its next step with them, as the
+    // uninterrupted run does, instead of re-evaluating the dashpots at the end-of-step
+    // velocities), the bonds' histories, the contact histories and their keys.
+    putFields(s, model.cells());
+    putFields(s, model.bonds());
+    putFields(s, model.contactPairs());
+    putFields(s, model.wallContacts());
 
     std::vector<double> walls;
     for (int k = 0; k < model.nWalls(); ++k) {
@@ -127,47 +170,26 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
 {
     const StateFile s = StateFile::read(file);
     const long nCells = model.cells().size();
-    std::vector<Quat> orientation(nCells);
-    const auto& q = s.doubles("cell.orientation", 4 * nCells);
-    for (long c = 0; c < nCells; ++c) orientation[c] = {q[4 * c], q[4 * c + 1], q[4 * c + 2], q[4 * c + 3]};
-    model.setCellState(s.vectors("cell.position", nCells), s.vectors("cell.velocity", nCells), orientation,
-                       s.vectors("cell.angularVelocity", nCells));
+    CellArrays cells;
+    getFields(s, cells, nCells);
+    model.setCellState(cells);
 
-    const long nBonds = model.nBonds();
     BondArrays b = model.bonds();
-    const auto& stage = s.bytes("bond.stage", nBonds);
-    b.stage.assign(stage.begin(), stage.end());
-    b.onset_displacement = s.doubles("bond.onsetDisplacement", nBonds);
-    b.onset_stress = s.doubles("bond.onsetStress", nBonds);
-    b.rupture_displacement = s.doubles("bond.ruptureDisplacement", nBonds);
-    b.max_displacement = s.doubles("bond.maxDisplacement", nBonds);
-    b.damage = s.doubles("bond.damage", nBonds);
+    getFields(s, b, model.nBonds());
     model.setBondHistory(b);
 
-    ContactPairArrays p;
-    p.cell_a = fromInt64<int>(s.integers("pair.cellA"));
-    const long nPairs = static_cast<long>(p.cell_a.size());
-    p.cell_b = fromInt64<int>(s.integers("pair.cellB", nPairs));
-    p.interface = fromInt64<int>(s.integers("pair.interface", nPairs));
-    p.tangential_spring = s.vectors("pair.tangentialSpring", nPairs);
-    p.last_normal = s.vectors("pair.lastNormal", nPairs);
     // States of point-contact runs, and those written before 2026-12-03, have no seats:
-    // every pair starts unseated.
-    p.seat = s.has("pair.seat") ? s.doubles("pair.seat", nPairs) : std::vector<double>(nPairs, -1.0);
-    const auto& pairStatus = s.bytes("pair.status", nPairs);
-    p.status.assign(pairStatus.begin(), pairStatus.end());
+    // every pair starts unseated (the optional array's neutral value).
+    ContactPairArrays p;
+    getFields(s, p, -1);
+    const long nPairs = p.size();
     for (long k = 0; k < nPairs; ++k)
         if (p.cell_a[k] < 0 || p.cell_a[k] >= nCells || p.cell_b[k] < 0 || p.cell_b[k] >= nCells)
             throw UserError(file.string() + ": contact pair " + std::to_string(k) +
                             " names a cell outside the mesh; the state does not belong to this case");
     WallContactArrays w;
-    w.cell = fromInt64<int>(s.integers("wallItem.cell"));
-    const long nItems = static_cast<long>(w.cell.size());
-    w.wall = fromInt64<int>(s.integers("wallItem.wall", nItems));
-    w.tangential_spring = s.vectors("wallItem.tangentialSpring", nItems);
-    w.last_normal = s.vectors("wallItem.lastNormal", nItems);
-    const auto& itemStatus = s.bytes("wallItem.status", nItems);
-    w.status.assign(itemStatus.begin(), itemStatus.end());
+    getFields(s, w, -1);
+    const long nItems = w.size();
     for (long k = 0; k < nItems; ++k)
         if (w.cell[k] < 0 || w.cell[k] >= nCells || w.wall[k] < 0 || w.wall[k] >= model.nWalls())
             throw UserError(file.string() + ": wall contact " + std::to_string(k) +
@@ -207,8 +229,7 @@ DemRestart readDemState(const fs::path& file, DemModel& model)
     model.setClock(r.time, r.step, energies, s.scalar("initialBalance"));
     // Last, as setCellForces marks the forces valid (states written before 2026-12
     // have none: the first step then re-evaluates them).
-    if (s.has("cell.force"))
-        model.setCellForces(s.vectors("cell.force", nCells), s.vectors("cell.torque", nCells));
+    model.setCellForces(cells);
     if (s.has("contactFrequencyBound")) model.setContactFrequencyBound(s.scalar("contactFrequencyBound"));
     return r;
 }

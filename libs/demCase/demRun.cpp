@@ -309,13 +309,8 @@ void BondedDemRun::printSetup() const
     for (int c = 0; c < cells.size(); ++c) mass += cells.mass[c];
     std::printf("Mesh: %d cells, %d bonds, dilation radius %.4g mm, mass %.5g kg\n", mesh.nCells(),
                 mesh.nBonds(), 1e3 * mesh.dilationRadius, mass);
-    std::printf(
-        "Bonds: %s, E %.4g GPa, tensile %.4g MPa, cohesion %.4g MPa, mu %.3g, G_I %.3g N/m, damping %s "
-        "%.3g\n",
-        parameters.bond_law.c_str(), 1e-9 * parameters.bond_youngs_modulus,
-        1e-6 * parameters.bond_tensile_strength, 1e-6 * parameters.bond_cohesion, parameters.bond_friction,
-        parameters.fracture_energy_mode_I, dampingReadingName(parameters.damping_reading),
-        parameters.bond_damping);
+    std::printf("Bonds: %s, damping %s %.3g\n", parameters.bond_law->describe().c_str(),
+                dampingReadingName(parameters.damping_reading), parameters.bond_damping);
     printBondSizeEffect(model->interfaces(), parameters);
     std::printf("Time step %.4g s = %.4g x Rayleigh step %.4g s; end time %.4g s (%ld steps)\n",
                 runTime.deltaT(), runTime.deltaT() / rayleighStep, rayleighStep, runTime.endTime(),

@@ -70,8 +70,13 @@ public:
     std::string deviceName() const;
 
 private:
-    struct Buffers;  // device arrays (cudaDemModel.cu)
+    struct Buffers;               // device arrays (cudaDemModel.cu)
+    DemModel::DeviceSide side();  // what this backend may do to host_ (DemModel::DeviceKey)
     void computeForces(double dt);
+    void bondForces(double dt);
+    void contactForces(double dt);
+    void wallReactions(double dt);
+    void gather();
     void singleStep(double dt);
     void measure(double sync_dt);
     void rebuildListsOnHost();

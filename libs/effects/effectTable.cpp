@@ -1,100 +1,39 @@
-// The library of model effects: one line per effect. Probe sizes are the trial
-// steps explainGap uses for its sensitivities (large enough to stand out of the
-// scatter of a few Voronoi seeds, small enough to stay near the baseline).
+// The library of model effects: one line per effect (each effect's descriptor, with its
+// probe size — the trial step explainGap uses for its sensitivities, large enough to stand
+// out of the scatter of a few Voronoi seeds, small enough to stay near the baseline — is a
+// static member of its class).
 #include <algorithm>
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
+#include "effects/bondStrengthScatter.hpp"
+#include "effects/contactCrumbling.hpp"
+#include "effects/machineCompliance.hpp"
 #include "effects/modelEffect.hpp"
+#include "effects/plateFriction.hpp"
+#include "effects/rateDamping.hpp"
+#include "effects/seatingOffset.hpp"
 
 namespace rockfrac {
 
-std::unique_ptr<ModelEffect> makeContactCrumbling(const Dictionary&);
-std::unique_ptr<ModelEffect> makeMachineCompliance(const Dictionary&);
-std::unique_ptr<ModelEffect> makeSeatingOffset(const Dictionary&);
-std::unique_ptr<ModelEffect> makeBondStrengthScatter(const Dictionary&);
-std::unique_ptr<ModelEffect> makeRateDamping(const Dictionary&);
-std::unique_ptr<ModelEffect> makePlateFriction(const Dictionary&);
-
 const std::vector<EffectDescriptor>& effectLibrary()
 {
-    static const std::vector<EffectDescriptor> library = [] {
-        std::vector<EffectDescriptor> l;
-        l.push_back({"contactCrumbling",
-                     "the rock under each plate crushes early (weakened bonds within a contact zone)",
-                     "soft start that stiffens (toe), larger displacement at peak, lower peak",
-                     "strengthLoss",
-                     "-",
-                     0.0,
-                     0.6,
-                     ProbeScale::absolute,
-                     0.0,
-                     0.95,
-                     {"depth"},
-                     makeContactCrumbling});
-        l.push_back({"machineCompliance",
-                     "a linear spring in series with the specimen (frame, platens)",
-                     "uniformly softer curve, larger displacement at peak, same peak and shape",
-                     "compliance",
-                     "m/N",
-                     0.0,
-                     0.5,
-                     ProbeScale::peakCompliance,
-                     0.0,
-                     1e-6,
-                     {},
-                     makeMachineCompliance});
-        l.push_back({"seatingOffset",
-                     "a seating gap that closes under a small force (toe region)",
-                     "toe at the start, displacement at peak up by the gap, same stiffness and peak",
-                     "depth",
-                     "m",
-                     0.0,
-                     0.3,
-                     ProbeScale::peakDisplacement,
-                     0.0,
-                     1e-3,
-                     {"closureForce"},
-                     makeSeatingOffset});
-        l.push_back({"bondStrengthScatter",
-                     "random bond strengths with a Weibull size effect",
-                     "wider spread and lower mean of the failure loads, same stiffness",
-                     "inverseModulus",
-                     "-",
-                     0.0,
-                     0.3,
-                     ProbeScale::absolute,
-                     0.0,
-                     1.0,
-                     {"seed"},
-                     makeBondStrengthScatter});
-        l.push_back({"rateDamping",
-                     "more rate dependence: the bond damping beta scaled",
-                     "more gradual softening after the peak",
-                     "betaFactor",
-                     "-",
-                     1.0,
-                     4.0,
-                     ProbeScale::absolute,
-                     0.05,
-                     10.0,
-                     {},
-                     makeRateDamping});
-        l.push_back({"plateFriction",
-                     "the rock-steel friction at the plates scaled",
-                     "a more or less confined contact zone (shape dependent)",
-                     "frictionFactor",
-                     "-",
-                     1.0,
-                     -0.75,
-                     ProbeScale::absolute,
-                     0.0,
-                     2.0,
-                     {},
-                     makePlateFriction});
-        return l;
-    }();
+    static const std::vector<EffectDescriptor> library{
+        ContactCrumbling::descriptor,    MachineCompliance::descriptor, SeatingOffset::descriptor,
+        BondStrengthScatter::descriptor, RateDamping::descriptor,       PlateFriction::descriptor,
+    };
     return library;
+}
+
+const Selector<ModelEffect>& effectSelector()
+{
+    static const Selector<ModelEffect> table("model effect", [] {
+        std::vector<Selector<ModelEffect>::Model> models;
+        for (const EffectDescriptor& d : effectLibrary()) models.push_back({d.name.c_str(), d.make});
+        return models;
+    }());
+    return table;
 }
 
 const EffectDescriptor& findEffect(const std::string& name, const std::string& where)
@@ -113,8 +52,11 @@ ModelEffects ModelEffects::read(const Dictionary& modelEffects)
         const EffectDescriptor& d = findEffect(key, modelEffects.fileName());
         if (!modelEffects.isDict(key))
             throw UserError(modelEffects.fileName() + ": '" + key + "' must be a sub-dictionary { " +
-                            d.parameter + " ...; } (docs/user-guide.md, model effects)");
-        result.effects_.push_back(d.make(modelEffects.subDict(key)));
+                            d.parameter + " ...; } (docs/models/effects/" + key + ".md)");
+        std::vector<std::string> entries{d.parameter};
+        entries.insert(entries.end(), d.fixedEntries.begin(), d.fixedEntries.end());
+        requireKnownEntries(modelEffects.subDict(key), entries);
+        result.effects_.push_back(effectSelector().make(key, modelEffects.subDict(key)));
     }
     return result;
 }

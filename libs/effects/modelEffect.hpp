@@ -1,8 +1,8 @@
 #pragma once
 // A model effect: a physical mechanism the baseline bonded DEM leaves out, that a
-// case can switch on in constant/modelEffects (docs/theory-explain.md). explainGap
-// screens a library of them against measured data; each is one file here plus one
-// line in effectTable.cpp.
+// case can switch on in constant/modelEffects (docs/models/effects/). explainGap
+// screens a library of them against measured data; each is one file pair here (the
+// class with its EffectDescriptor as a static member) plus one line in effectTable.cpp.
 //
 // Contract: an effect whose fitted parameter has its neutral value changes nothing,
 // bit for bit (the baseline model is the effect switched off).
@@ -62,8 +62,18 @@ struct EffectDescriptor {
     std::unique_ptr<ModelEffect> (*make)(const Dictionary& effectDict) = nullptr;
 };
 
+template <class Effect>
+std::unique_ptr<ModelEffect> makeEffect(const Dictionary& effectDict)
+{
+    return std::make_unique<Effect>(effectDict);
+}
+
 // Every registered effect, in library order.
 const std::vector<EffectDescriptor>& effectLibrary();
+// The selection table built from the library (core/selector.hpp).
+template <class Base, class... Args>
+class Selector;
+const Selector<ModelEffect>& effectSelector();
 // The descriptor of `name`; UserError listing the known names otherwise (`where` names the file).
 const EffectDescriptor& findEffect(const std::string& name, const std::string& where);
 

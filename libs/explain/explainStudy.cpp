@@ -175,7 +175,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     if (!dict.isDict("baseline"))
         throw UserError(
             dict.fileName() +
-            ": 'baseline { tensileStrength { entry bond/tensileStrength; range (10e6 60e6); } }' is "
+            ": 'baseline { tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (10e6 60e6); } }' is "
             "required: the parameters calibrated as usual, re-fitted with each candidate effect "
             "('baseline { }' tests the case as it is calibrated)");
     for (const Entry& e : dict.subDict("baseline").entries()) {

@@ -2,13 +2,14 @@
 #include "fem/femMaterial.hpp"
 
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "fem/kstDfhMaterial.hpp"
 #include "fem/linearElasticMaterial.hpp"
 
 namespace rockfrac::fem {
 
-FemMaterial::FemMaterial(const MaterialParameters& parameters)
-    : parameters_(parameters),
+FemMaterial::FemMaterial(const ElasticParameters& parameters)
+    : elasticParameters_(parameters),
       elasticity_(IsotropicElasticity::fromYoungPoisson(parameters.youngsModulus, parameters.poissonRatio))
 {
     if (!(parameters.density > 0.0)) throw UserError("material: density must be > 0");
@@ -19,36 +20,33 @@ FemMaterial::FemMaterial(const MaterialParameters& parameters)
 
 namespace {
 
-using Factory = std::unique_ptr<FemMaterial> (*)(const MaterialParameters&);
-
 template <class Material>
-std::unique_ptr<FemMaterial> make(const MaterialParameters& parameters)
+std::unique_ptr<FemMaterialModel> make(const Dictionary& coefficients)
 {
-    return std::make_unique<Material>(parameters);
+    return std::make_unique<FemMaterialModelOf<Material>>(Material::read(coefficients));
 }
-
-// One line per model.
-const std::pair<const char*, Factory> materialTable[] = {
-    {"linearElastic", &make<LinearElasticMaterial>},
-    {"kstDfh", &make<KstDfhMaterial>},
-};
 
 }  // namespace
 
-std::vector<std::string> femMaterialNames()
+// One line per model.
+const Selector<FemMaterialModel>& femMaterials()
 {
-    std::vector<std::string> names;
-    for (const auto& entry : materialTable) names.emplace_back(entry.first);
-    return names;
+    static const Selector<FemMaterialModel> table("FEM material",
+                                                  {
+                                                      {"linearElastic", &make<LinearElasticMaterial>, true},
+                                                      {"kstDfh", &make<KstDfhMaterial>},
+                                                  });
+    return table;
 }
 
-std::unique_ptr<FemMaterial> makeFemMaterial(const std::string& name, const MaterialParameters& parameters)
+std::vector<std::string> femMaterialNames()
 {
-    for (const auto& entry : materialTable)
-        if (name == entry.first) return entry.second(parameters);
-    std::string known;
-    for (const auto& n : femMaterialNames()) known += (known.empty() ? "" : ", ") + n;
-    throw UserError("unknown FEM material '" + name + "'; known materials: " + known);
+    return femMaterials().names();
+}
+
+std::shared_ptr<const FemMaterialModel> defaultFemMaterial()
+{
+    return std::make_shared<FemMaterialModelOf<KstDfhMaterial>>();
 }
 
 }  // namespace rockfrac::fem

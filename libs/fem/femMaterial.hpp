@@ -4,8 +4,11 @@
 // A material owns its per-element history (structure of arrays) and runs the
 // element loop itself (elementLoop.hpp) so that its stress update is inlined into
 // the loop: one virtual call per step, not per element. A model is chosen by a
-// keyword (`linearElastic`, `kstDfh`) through the table in femMaterial.cpp; a new
-// model is a new file pair plus one line in that table.
+// keyword (`material linearElastic;`, `material kstDfh;`) through the table in
+// femMaterial.cpp and reads its own coefficients from the sub-dictionary named after
+// it (`kstDfh { kst {...} dfh {...} }`); a new model is a new file pair plus one line
+// in that table. The selected FemMaterialModel holds the coefficients; each FemModel
+// makes its own FemMaterial (with the per-element history) from it.
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -18,45 +21,12 @@
 
 namespace rockfrac::fem {
 
-// Every parameter of the shipped models. Defaults are the documented ones of
-// docs/physics.md section 2 (granite); the case dictionary overrides them.
-struct MaterialParameters {
-    // Elasticity and density (physics.md: Table 2 rock values).
+// Elasticity and density, common to every material (rock { } of constant/rockProperties;
+// physics.md: Table 2 rock values).
+struct ElasticParameters {
     double density = 2540.0;        // kg/m^3
     double youngsModulus = 77.0e9;  // Pa
     double poissonRatio = 0.21;
-
-    // KST shear yield, written for the von Mises equivalent stress:
-    //   sigma_eq = sqrt(a0 + a1 P + a2 P^2), P = -tr(sigma)/3 (compression positive),
-    // so a0 is in Pa^2 (the paper's a0^2), a1 in Pa, a2 dimensionless.
-    double kstA0 = 1.0e16;  // Pa^2
-    double kstA1 = 3.1e8;   // Pa
-    double kstA2 = 2.0;
-    // Most tensile pressure the material can hold (P_cut <= 0, Pa). NaN means
-    // "automatic": the upper root of a0 + a1 P + a2 P^2 = 0 where the surface closes
-    // (about -46 MPa with the defaults), or 0 if that polynomial has no real root.
-    double tensilePressureCutoff = std::numeric_limits<double>::quiet_NaN();
-    // Optional KST compaction curve: (compressive volumetric strain, pressure) points,
-    // piecewise linear, starting at (0, 0) implicitly; empty = off (the paper's case).
-    std::vector<std::pair<double, double>> compactionCurve;
-
-    // DFH tensile damage (Weibull): m, sigma_w = mean strength of volume V_ref.
-    bool damageEnabled = true;
-    double weibullModulus = 7.0;
-    double weibullStress = 21.0e6;  // Pa
-    double referenceVolume = 0.0;   // m^3; a case entry, must be set when damage is on
-    std::uint64_t seed = 0;         // case seed for the per-element thresholds
-    // Fraction of the shear stiffness kept in the planes containing an open crack's normal.
-    double crackShearRetention = 0.0;
-    // Crack band: fracture energy G_F of a crack [N/m]; 0 = complete failure at the
-    // threshold (the paper's DFH). With G_F > 0 a crack's normal stress softens linearly
-    // over an opening set by G_F and the element's width across the crack.
-    double fractureEnergy = 0.0;
-    // Element erosion: an element whose number of failed directions reaches this value
-    // stops contributing (zero stress from then on, never checked for inversion), as in
-    // the paper's FEM ("an element stops contributing once the damage variable reaches
-    // one"). 0 = never (cracked elements carry compression across closed cracks).
-    int erodeAfterCracks = 0;
 };
 
 // A per-element state array the caller can write and read back for restarts.
@@ -84,18 +54,65 @@ public:
     virtual double damage(std::size_t /*element*/, int /*direction*/) const { return 0.0; }
     virtual double equivalentPlasticStrain(std::size_t /*element*/) const { return 0.0; }
 
-    const MaterialParameters& parameters() const { return parameters_; }
+    const ElasticParameters& elasticParameters() const { return elasticParameters_; }
     const IsotropicElasticity& elasticity() const { return elasticity_; }
 
 protected:
-    explicit FemMaterial(const MaterialParameters& parameters);
+    explicit FemMaterial(const ElasticParameters& parameters);
 
-    MaterialParameters parameters_;
+    ElasticParameters elasticParameters_;
     IsotropicElasticity elasticity_;
 };
 
-// The material registered under `name`; UserError listing the known names otherwise.
-std::unique_ptr<FemMaterial> makeFemMaterial(const std::string& name, const MaterialParameters& parameters);
+// A selected material with its coefficients (immutable, shared by copies of the
+// parameters): what a case chose; make() gives a FemModel its own material.
+class FemMaterialModel {
+public:
+    virtual ~FemMaterialModel() = default;
+    virtual std::string type() const = 0;
+    virtual std::unique_ptr<FemMaterial> make(const ElasticParameters& elastic) const = 0;
+    // The coefficients for the log, after "Material <type>: E ..., nu ..., density ...":
+    // "; KST a0 ... DFH ..." (empty for a material without coefficients).
+    virtual std::string describe() const = 0;
+};
+
+// A model of Material with its Coefficients (Material::Coefficients, ::keyword, ::read,
+// ::check, ::describe).
+template <class Material>
+class FemMaterialModelOf final : public FemMaterialModel {
+public:
+    using Coefficients = typename Material::Coefficients;
+    explicit FemMaterialModelOf(const Coefficients& coefficients = Coefficients{})
+        : coefficients_(coefficients)
+    {
+        Material::check(coefficients_);
+    }
+    std::string type() const override { return Material::keyword; }
+    std::unique_ptr<FemMaterial> make(const ElasticParameters& elastic) const override
+    {
+        return std::make_unique<Material>(elastic, coefficients_);
+    }
+    std::string describe() const override { return Material::describe(coefficients_); }
+    const Coefficients& coefficients() const { return coefficients_; }
+
+private:
+    Coefficients coefficients_;
+};
+
+}  // namespace rockfrac::fem
+
+namespace rockfrac {
+class Dictionary;
+template <class Base, class... Args>
+class Selector;
+}  // namespace rockfrac
+
+namespace rockfrac::fem {
+
+// The table of materials (femMaterial.cpp): keyword -> model read from its sub-dictionary.
+const Selector<FemMaterialModel>& femMaterials();
 std::vector<std::string> femMaterialNames();
+// kstDfh with the documented defaults (KstDfhParameters).
+std::shared_ptr<const FemMaterialModel> defaultFemMaterial();
 
 }  // namespace rockfrac::fem

@@ -16,7 +16,7 @@ FemModel::FemModel(const TetMesh& mesh, const FemParameters& parameters)
     : mesh_(mesh),
       parameters_(parameters),
       geometry_(makeElementGeometry(mesh)),
-      material_(makeFemMaterial(parameters.materialName, parameters.material))
+      material_(parameters.material->make(parameters.rock))
 {
     if (!(parameters.timeStepSafety > 0.0 && parameters.timeStepSafety <= 1.0))
         throw UserError("FEM: timeStepSafety must lie in (0, 1]");
@@ -90,7 +90,7 @@ void FemModel::buildNodeElementLists()
 // that brings it to the target (omega_e^2 = 4 lambda_max(K_e) / (rho_e V_e)).
 void FemModel::computeMasses()
 {
-    const double density = parameters_.material.density;
+    const double density = parameters_.rock.density;
     const double target = parameters_.massScalingTimeStep;
     const double reach = parameters_.timeStepSafety * contactStepFactor();
     elementDensity_.assign(geometry_.numElements(), density);
@@ -135,7 +135,7 @@ double FemModel::contactStepFactor() const
 // after mass scaling, and the penalty does not grow with added mass.
 void FemModel::computeContactStiffness()
 {
-    const double density = parameters_.material.density;
+    const double density = parameters_.rock.density;
     std::vector<double> lowestFrequencySquared(mesh_.numNodes(), std::numeric_limits<double>::infinity());
     for (std::size_t e = 0; e < geometry_.numElements(); ++e)
         for (int a = 0; a < 4; ++a) {

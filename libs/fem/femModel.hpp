@@ -20,8 +20,10 @@
 namespace rockfrac::fem {
 
 struct FemParameters {
-    std::string materialName = "kstDfh";  // keyword of the material table
-    MaterialParameters material;
+    ElasticParameters rock;  // elasticity and density (rock { } of constant/rockProperties)
+    // The material with its coefficients (`material <keyword>;` and its sub-dictionary);
+    // kstDfh with the documented defaults unless set.
+    std::shared_ptr<const FemMaterialModel> material = defaultFemMaterial();
     // Fraction of the critical step used by stableTimeStep().
     double timeStepSafety = 0.9;
     // Target step for mass scaling (s); 0 = off. Elements whose stable step is smaller

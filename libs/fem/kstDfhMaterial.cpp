@@ -1,9 +1,13 @@
 #include "fem/kstDfhMaterial.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <sstream>
 
+#include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "fem/elementLoop.hpp"
 #include "fem/weibullStrength.hpp"
 
@@ -22,30 +26,124 @@ void checkCompactionCurve(const std::vector<std::pair<double, double>>& curve)
     }
 }
 
+double pressureCutoffOf(const KstDfhParameters& p)
+{
+    return std::isnan(p.tensilePressureCutoff) ? automaticPressureCutoff(p.kstA0, p.kstA1, p.kstA2)
+                                               : p.tensilePressureCutoff;
+}
+
 }  // namespace
 
-KstDfhMaterial::KstDfhMaterial(const MaterialParameters& parameters) : FemMaterial(parameters)
+namespace {
+
+void readKst(const Dictionary& kst, KstDfhParameters& m)
 {
-    checkCompactionCurve(parameters.compactionCurve);
+    static const Dimensions pascal = Dimensions::fromUnits("Pa");
+    static const Dimensions pascalSquared = Dimensions::fromUnits("Pa^2");
+    requireKnownEntries(kst, {"a0", "a1", "a2", "tensilePressureCutoff", "compactionCurve"});
+    m.kstA0 = kst.getScalar("a0", Bounds::any(), &pascalSquared);
+    m.kstA1 = kst.getScalar("a1", Bounds::any(), &pascal);
+    m.kstA2 = kst.getScalar("a2", Bounds::any());
+    if (kst.found("tensilePressureCutoff"))
+        m.tensilePressureCutoff = kst.getScalar("tensilePressureCutoff", Bounds::closed(-1e300, 0), &pascal);
+    if (kst.found("compactionCurve"))
+        for (const auto& point : kst.get<std::vector<std::vector<double>>>("compactionCurve")) {
+            if (point.size() != 2)
+                throw UserError(kst.fileName() +
+                                ": kstDfh/kst/compactionCurve: each point is (volumetricStrain pressure)");
+            m.compactionCurve.emplace_back(point[0], point[1]);
+        }
+}
+
+void readDfh(const Dictionary& dfh, KstDfhParameters& m)
+{
+    static const Dimensions pascal = Dimensions::fromUnits("Pa");
+    static const Dimensions volume = Dimensions::fromUnits("m^3");
+    static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
+    requireKnownEntries(dfh, {"damage", "weibullModulus", "weibullStress", "referenceVolume", "seed",
+                              "crackShearRetention", "fractureEnergy", "erodeAfterCracks"});
+    m.damageEnabled = dfh.getOrDefault<bool>("damage", true);
+    m.weibullModulus = dfh.getScalar("weibullModulus", Bounds::positive());
+    m.weibullStress = dfh.getScalar("weibullStress", Bounds::positive(), &pascal);
+    m.referenceVolume = dfh.getScalar("referenceVolume", Bounds::positive(), &volume);
+    m.seed = dfh.get<std::uint64_t>("seed");
+    m.crackShearRetention = dfh.getScalarOrDefault("crackShearRetention", 0.0, Bounds::closed(0, 1));
+    m.fractureEnergy = dfh.getScalarOrDefault("fractureEnergy", 0.0, Bounds::nonNegative(), &energyPerArea);
+    const double erode = dfh.getScalarOrDefault("erodeAfterCracks", 0.0, Bounds::closed(0, 3));
+    if (erode != std::floor(erode)) {
+        std::ostringstream message;
+        message << dfh.fileName() << ": kstDfh/dfh/erodeAfterCracks is " << erode
+                << "; give the number of failed directions that erode an element: 0 (never), 1, 2 or 3";
+        throw UserError(message.str());
+    }
+    m.erodeAfterCracks = static_cast<int>(erode);
+}
+
+}  // namespace
+
+KstDfhMaterial::Coefficients KstDfhMaterial::read(const Dictionary& d)
+{
+    requireKnownEntries(d, {"kst", "dfh"});
+    Coefficients c;
+    readKst(d.subDict("kst"), c);
+    readDfh(d.subDict("dfh"), c);
+    return c;
+}
+
+std::string KstDfhMaterial::describe(const Coefficients& m)
+{
+    char buffer[512];
+    std::string text;
+    std::snprintf(
+        buffer, sizeof buffer,
+        "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
+        m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus, 1e-6 * m.weibullStress,
+        1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
+    text = buffer;
+    if (m.damageEnabled) {
+        if (m.fractureEnergy > 0.0) {
+            std::snprintf(buffer, sizeof buffer, "; crack band G_F %.4g N/m", m.fractureEnergy);
+            text += buffer;
+        } else {
+            text += "; cracks complete at the threshold";
+        }
+        if (m.crackShearRetention > 0.0) {
+            std::snprintf(buffer, sizeof buffer, "; crack shear retention %.3g", m.crackShearRetention);
+            text += buffer;
+        }
+        if (m.erodeAfterCracks > 0) {
+            std::snprintf(buffer, sizeof buffer, "; erosion after %d cracks", m.erodeAfterCracks);
+            text += buffer;
+        }
+    }
+    return text;
+}
+
+void KstDfhMaterial::check(const Coefficients& p)
+{
+    checkCompactionCurve(p.compactionCurve);
+    if (pressureCutoffOf(p) > 0.0)
+        throw UserError("kstDfh: the tensile pressure cutoff must be <= 0 (P is positive in compression)");
+    if (!(p.fractureEnergy >= 0.0))
+        throw UserError("kstDfh: fractureEnergy must be >= 0 (0: complete failure at the threshold)");
+    if (!(p.crackShearRetention >= 0.0 && p.crackShearRetention <= 1.0))
+        throw UserError("kstDfh: crackShearRetention must lie in [0, 1]");
+    if (p.erodeAfterCracks < 0 || p.erodeAfterCracks > 3)
+        throw UserError("kstDfh: erodeAfterCracks must be 0 (no erosion), 1, 2 or 3");
+}
+
+KstDfhMaterial::KstDfhMaterial(const ElasticParameters& elastic, const Coefficients& parameters)
+    : FemMaterial(elastic), coefficients_(parameters)
+{
+    check(parameters);
     constants_.elastic = elasticity_;
     constants_.a0 = parameters.kstA0;
     constants_.a1 = parameters.kstA1;
     constants_.a2 = parameters.kstA2;
-    constants_.pressureCutoff =
-        std::isnan(parameters.tensilePressureCutoff)
-            ? automaticPressureCutoff(parameters.kstA0, parameters.kstA1, parameters.kstA2)
-            : parameters.tensilePressureCutoff;
-    if (constants_.pressureCutoff > 0.0)
-        throw UserError("kstDfh: the tensile pressure cutoff must be <= 0 (P is positive in compression)");
+    constants_.pressureCutoff = pressureCutoffOf(parameters);
     constants_.damageEnabled = parameters.damageEnabled;
     constants_.crackShearRetention = parameters.crackShearRetention;
     constants_.fractureEnergy = parameters.fractureEnergy;
-    if (!(parameters.fractureEnergy >= 0.0))
-        throw UserError("kstDfh: fractureEnergy must be >= 0 (0: complete failure at the threshold)");
-    if (!(parameters.crackShearRetention >= 0.0 && parameters.crackShearRetention <= 1.0))
-        throw UserError("kstDfh: crackShearRetention must lie in [0, 1]");
-    if (parameters.erodeAfterCracks < 0 || parameters.erodeAfterCracks > 3)
-        throw UserError("kstDfh: erodeAfterCracks must be 0 (no erosion), 1, 2 or 3");
     for (const auto& [strain, pressure] : parameters.compactionCurve) {
         compactionStrains_.push_back(strain);
         compactionPressures_.push_back(pressure);
@@ -66,15 +164,15 @@ void KstDfhMaterial::initialise(const ElementGeometry& geometry)
     failureStress_.assign(3 * n, std::numeric_limits<double>::infinity());
     // The crack band's history exists only with a fracture energy (restart files and the
     // memory of the default model are unchanged).
-    crackOpening_.assign(parameters_.fractureEnergy > 0.0 ? 3 * n : 0, 0.0);
-    softeningStrain_.assign(parameters_.fractureEnergy > 0.0 ? 3 * n : 0, 0.0);
+    crackOpening_.assign(coefficients_.fractureEnergy > 0.0 ? 3 * n : 0, 0.0);
+    softeningStrain_.assign(coefficients_.fractureEnergy > 0.0 ? 3 * n : 0, 0.0);
     for (std::size_t e = 0; e < n; ++e)
         for (int i = 0; i < 3; ++i) crackFrame_[9 * e + 4 * i] = 1.0;
-    if (!parameters_.damageEnabled) return;
-    const WeibullStrength weibull(parameters_.weibullModulus, parameters_.weibullStress,
-                                  parameters_.referenceVolume);
+    if (!coefficients_.damageEnabled) return;
+    const WeibullStrength weibull(coefficients_.weibullModulus, coefficients_.weibullStress,
+                                  coefficients_.referenceVolume);
     for (std::size_t e = 0; e < n; ++e) {
-        const auto thresholds = weibull.elementThresholds(parameters_.seed, e, geometry.volumes[e]);
+        const auto thresholds = weibull.elementThresholds(coefficients_.seed, e, geometry.volumes[e]);
         for (int i = 0; i < 3; ++i) failureStress_[3 * e + i] = thresholds[i];
     }
 }
@@ -147,7 +245,7 @@ long long KstDfhMaterial::computeElementForces(const ElementGeometry& geometry, 
                                                double* stresses, double* elementForces)
 {
     const KstDfhConstants c = constants_;
-    const double erodeAt = parameters_.erodeAfterCracks > 0 ? parameters_.erodeAfterCracks : 4.0;
+    const double erodeAt = coefficients_.erodeAfterCracks > 0 ? coefficients_.erodeAfterCracks : 4.0;
     const double* crackCount = crackCount_.data();
     return elementLoop(
         geometry, displacements, stresses, elementForces,

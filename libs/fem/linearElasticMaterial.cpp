@@ -1,8 +1,17 @@
 #include "fem/linearElasticMaterial.hpp"
 
+#include "core/selector.hpp"
 #include "fem/elementLoop.hpp"
 
 namespace rockfrac::fem {
+
+LinearElasticMaterial::Coefficients LinearElasticMaterial::read(const Dictionary& coefficients)
+{
+    requireKnownEntries(
+        coefficients, {},
+        "linearElastic has no coefficients of its own: rock { } holds E, poissonRatio, density");
+    return {};
+}
 
 long long LinearElasticMaterial::computeElementForces(const ElementGeometry& geometry,
                                                       const double* displacements, double* stresses,

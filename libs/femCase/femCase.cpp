@@ -7,6 +7,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "io/stateFile.hpp"
 #include "io/vtkOutput.hpp"
 
@@ -17,64 +18,23 @@ using namespace fem;
 
 // ---- Parameters ------------------------------------------------------------------
 
-namespace {
-
-void readKst(const Dictionary& kst, MaterialParameters& m)
-{
-    static const Dimensions pascal = Dimensions::fromUnits("Pa");
-    static const Dimensions pascalSquared = Dimensions::fromUnits("Pa^2");
-    m.kstA0 = kst.getScalar("a0", Bounds::any(), &pascalSquared);
-    m.kstA1 = kst.getScalar("a1", Bounds::any(), &pascal);
-    m.kstA2 = kst.getScalar("a2", Bounds::any());
-    if (kst.found("tensilePressureCutoff"))
-        m.tensilePressureCutoff = kst.getScalar("tensilePressureCutoff", Bounds::closed(-1e300, 0), &pascal);
-    if (kst.found("compactionCurve"))
-        for (const auto& point : kst.get<std::vector<std::vector<double>>>("compactionCurve")) {
-            if (point.size() != 2)
-                throw UserError(kst.fileName() +
-                                ": kst/compactionCurve: each point is (volumetricStrain pressure)");
-            m.compactionCurve.emplace_back(point[0], point[1]);
-        }
-}
-
-void readDfh(const Dictionary& dfh, MaterialParameters& m)
-{
-    static const Dimensions pascal = Dimensions::fromUnits("Pa");
-    static const Dimensions volume = Dimensions::fromUnits("m^3");
-    m.damageEnabled = dfh.getOrDefault<bool>("damage", true);
-    m.weibullModulus = dfh.getScalar("weibullModulus", Bounds::positive());
-    m.weibullStress = dfh.getScalar("weibullStress", Bounds::positive(), &pascal);
-    m.referenceVolume = dfh.getScalar("referenceVolume", Bounds::positive(), &volume);
-    m.seed = dfh.get<std::uint64_t>("seed");
-    m.crackShearRetention = dfh.getScalarOrDefault("crackShearRetention", 0.0, Bounds::closed(0, 1));
-    static const Dimensions energyPerArea = Dimensions::fromUnits("N/m");
-    m.fractureEnergy = dfh.getScalarOrDefault("fractureEnergy", 0.0, Bounds::nonNegative(), &energyPerArea);
-    const double erode = dfh.getScalarOrDefault("erodeAfterCracks", 0.0, Bounds::closed(0, 3));
-    if (erode != std::floor(erode)) {
-        std::ostringstream message;
-        message << dfh.fileName() << ": dfh/erodeAfterCracks is " << erode
-                << "; give the number of failed directions that erode an element: 0 (never), 1, 2 or 3";
-        throw UserError(message.str());
-    }
-    m.erodeAfterCracks = static_cast<int>(erode);
-}
-
-}  // namespace
-
 FemParameters readFemParameters(const Dictionary& d)
 {
     static const Dimensions pascal = Dimensions::fromUnits("Pa");
     static const Dimensions density = Dimensions::fromUnits("kg/m^3");
     FemParameters p;
-    p.materialName = d.getWord("material", femMaterialNames());
     const Dictionary& rock = d.subDict("rock");
-    p.material.youngsModulus = rock.getScalar("E", Bounds::positive(), &pascal);
-    p.material.poissonRatio = rock.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
-    p.material.density = rock.getScalar("density", Bounds::positive(), &density);
-    if (p.materialName == "kstDfh") {
-        readKst(d.subDict("kst"), p.material);
-        readDfh(d.subDict("dfh"), p.material);
-    }
+    requireKnownEntries(rock, {"E", "poissonRatio", "density"});
+    p.rock.youngsModulus = rock.getScalar("E", Bounds::positive(), &pascal);
+    p.rock.poissonRatio = rock.getScalar("poissonRatio", Bounds::closedOpen(0, 0.5));
+    p.rock.density = rock.getScalar("density", Bounds::positive(), &density);
+    for (const char* moved : {"kst", "dfh"})
+        if (d.found(moved))
+            throw UserError(
+                d.location(moved).str() + ": '" + moved +
+                "' belongs in the material's own sub-dictionary: kstDfh { kst { ... } dfh { ... } } "
+                "(docs/models/fem/kstDfh.md)");
+    p.material = femMaterials().select(d, "material");  // the model reads its own sub-dictionary
     return p;
 }
 

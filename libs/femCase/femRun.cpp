@@ -613,27 +613,14 @@ void FeFractureRun::printSetup() const
 {
     double mass = 0;
     for (double m : model->nodalMasses()) mass += m;
-    const MaterialParameters& m = parameters.material;
+    const ElasticParameters& m = parameters.rock;
     std::printf("Mesh: %zu tets, %zu nodes, %zu boundary nodes; extent %.4g x %.4g x %.4g mm\n",
                 mesh.numTets(), mesh.numNodes(), model->contactNodes().size(),
                 1e3 * (bounds.hi.x - bounds.lo.x), 1e3 * (bounds.hi.y - bounds.lo.y),
                 1e3 * (bounds.hi.z - bounds.lo.z));
-    std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3", parameters.materialName.c_str(),
-                1e-9 * m.youngsModulus, m.poissonRatio, m.density);
-    if (parameters.materialName == "kstDfh")
-        std::printf(
-            "; KST a0 %.4g Pa^2 a1 %.4g Pa a2 %.4g; DFH %s m %.3g sigma_w %.4g MPa V_ref %.4g mm^3 seed %llu",
-            m.kstA0, m.kstA1, m.kstA2, m.damageEnabled ? "on" : "off", m.weibullModulus,
-            1e-6 * m.weibullStress, 1e9 * m.referenceVolume, static_cast<unsigned long long>(m.seed));
-    if (parameters.materialName == "kstDfh" && m.damageEnabled) {
-        if (m.fractureEnergy > 0.0)
-            std::printf("; crack band G_F %.4g N/m", m.fractureEnergy);
-        else
-            std::printf("; cracks complete at the threshold");
-        if (m.crackShearRetention > 0.0) std::printf("; crack shear retention %.3g", m.crackShearRetention);
-        if (m.erodeAfterCracks > 0) std::printf("; erosion after %d cracks", m.erodeAfterCracks);
-    }
-    std::printf("\n");
+    std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3%s\n",
+                parameters.material->type().c_str(), 1e-9 * m.youngsModulus, m.poissonRatio, m.density,
+                parameters.material->describe().c_str());
     std::printf(
         "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
         "added mass %.3g %%; mass damping %.4g 1/s\n",

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "core/atomicFile.hpp"
+#include "core/checksum.hpp"
 #include "core/error.hpp"
 
 namespace rockfrac {
@@ -81,16 +82,6 @@ private:
 };
 
 }  // namespace
-
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash)
-{
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-        hash ^= p[i];
-        hash *= 0x100000001b3ULL;
-    }
-    return hash;
-}
 
 void StateFile::put(const std::string& name, std::vector<double> values)
 {

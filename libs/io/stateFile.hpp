@@ -7,7 +7,7 @@
 //   magic "RFSTATE\0" | uint32 version | uint32 nArrays
 //   per array: uint32 nameLength | name | uint8 type (1 double, 2 int64, 3 uint8) |
 //              uint64 count | count values
-//   uint64 FNV-1a checksum of everything before it
+//   uint64 FNV-1a checksum of everything before it (core/checksum.hpp fnv1a)
 // The reader checks every length against the file size, the type codes and
 // the checksum, and names the file and the array in its UserError: a torn or
 // corrupt file is reported, never trusted.
@@ -52,8 +52,5 @@ private:
     [[noreturn]] void missing(const std::string& name, const char* kind) const;
     void checkCount(const std::string& name, std::size_t count, long expected) const;
 };
-
-// 64-bit FNV-1a, used as the checksum of state and mesh files.
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 0xcbf29ce484222325ULL);
 
 }  // namespace rockfrac

@@ -3,8 +3,8 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "io/textTable.hpp"
 #include "stats/measurements.hpp"
-#include "stats/textTable.hpp"
 
 namespace rockfrac::stats {
 

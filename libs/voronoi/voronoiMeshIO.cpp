@@ -2,20 +2,20 @@
 
 #include <unistd.h>
 
-#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/atomicFile.hpp"
+#include "core/checksum.hpp"
+#include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "voronoi/meshTopology.hpp"
 
@@ -194,23 +194,6 @@ private:
     std::string label_;
 };
 
-// Word-wise FNV-1a over the payload: each 8-byte little-endian word (the last
-// one zero-padded) is xor-ed in and multiplied by the FNV prime, then the
-// length. Catches truncation, bit flips and files from different runs.
-std::uint64_t checksum(const unsigned char* data, std::size_t size)
-{
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    const std::uint64_t prime = 0x100000001b3ULL;
-    std::size_t i = 0;
-    for (; i + 8 <= size; i += 8) hash = (hash ^ loadU64(data + i)) * prime;
-    if (i < size) {
-        unsigned char tail[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        std::memcpy(tail, data + i, size - i);
-        hash = (hash ^ loadU64(tail)) * prime;
-    }
-    return (hash ^ size) * prime;
-}
-
 // ---- Binary file layout -----------------------------------------------------
 
 constexpr char magic[16] = {'r', 'o', 'c', 'k', 'f', 'r', 'a', 'c', '-', 'v', 'o', 'r', 'o', 'n', 'o', 'i'};
@@ -284,7 +267,7 @@ Bytes makeFile(FileKind kind, MeshInfo& info, const Bytes& payload)
     out.u64(counts.first);
     out.u64(counts.second);
     out.u64(0);  // reserved
-    const std::uint64_t sum = checksum(payload.data(), payload.size());
+    const std::uint64_t sum = fnv1aWords(payload.data(), payload.size());
     info.checksums[static_cast<int>(kind) - 1] = sum;
     out.u64(sum);
     out.u64(payload.size());
@@ -317,7 +300,7 @@ Bytes readCheckedFile(const fs::path& caseDir, const FileSpec& spec, const MeshI
     if (bytes.size() < expected) truncated();
     if (bytes.size() > expected || loadU64(&bytes[56]) != expected - headerBytes)
         fail(label, "expected " + std::to_string(expected) + " bytes, found " + std::to_string(bytes.size()));
-    const std::uint64_t sum = checksum(bytes.data() + headerBytes, bytes.size() - headerBytes);
+    const std::uint64_t sum = fnv1aWords(bytes.data() + headerBytes, bytes.size() - headerBytes);
     if (sum != loadU64(&bytes[48]) || sum != info.checksums[static_cast<int>(spec.kind) - 1])
         fail(label, "checksum mismatch (corrupt, or not from the run meshInfo describes)");
     return bytes;
@@ -364,76 +347,24 @@ std::string meshInfoText(const MeshInfo& info)
     return s.str();
 }
 
-// Tokens of a FoamFile-style dictionary: words, '{', '}', ';', with // and
-// /* */ comments removed; each with its line for messages.
-struct Token {
-    std::string text;
-    int line;
-};
-
-std::vector<Token> tokenize(const std::string& text, const std::string& label)
-{
-    std::vector<Token> tokens;
-    int line = 1;
-    for (std::size_t i = 0; i < text.size();) {
-        const char c = text[i];
-        if (c == '\n') ++line;
-        if (std::isspace(static_cast<unsigned char>(c))) {
-            ++i;
-        } else if (text.compare(i, 2, "//") == 0) {
-            while (i < text.size() && text[i] != '\n') ++i;
-        } else if (text.compare(i, 2, "/*") == 0) {
-            const std::size_t end = text.find("*/", i + 2);
-            if (end == std::string::npos) fail(label, "unterminated /* comment");
-            for (; i < end + 2; ++i) line += text[i] == '\n';
-        } else if (c == '{' || c == '}' || c == ';') {
-            tokens.push_back({std::string(1, c), line});
-            ++i;
-        } else {
-            const std::size_t start = i;
-            while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != ';' &&
-                   text[i] != '{' && text[i] != '}')
-                ++i;
-            tokens.push_back({text.substr(start, i - start), line});
-        }
-    }
-    return tokens;
-}
-
-// Top-level `key value;` entries; the FoamFile { } header block is skipped.
-std::map<std::string, Token> parseEntries(const std::string& text, const std::string& label)
-{
-    const std::vector<Token> tokens = tokenize(text, label);
-    std::map<std::string, Token> entries;
-    for (std::size_t i = 0; i < tokens.size();) {
-        const Token& key = tokens[i];
-        const std::string where = label + ":" + std::to_string(key.line);
-        if (key.text == "FoamFile" && i + 1 < tokens.size() && tokens[i + 1].text == "{") {
-            while (i < tokens.size() && tokens[i].text != "}") ++i;
-            if (i == tokens.size()) fail(where, "unterminated FoamFile block");
-            ++i;
-            continue;
-        }
-        if (i + 2 >= tokens.size() || tokens[i + 2].text != ";" || tokens[i + 1].text == ";")
-            fail(where, "expected 'keyword value;' at '" + key.text + "'");
-        if (!entries.emplace(key.text, tokens[i + 1]).second) fail(where, "'" + key.text + "' given twice");
-        i += 3;
-    }
-    return entries;
-}
-
+// meshInfo's entries, read by the case dictionary reader (core/dictionary.hpp): each
+// one word or number, converted exactly as written (from_chars, as the writer's to_chars).
 class EntryReader {
 public:
-    EntryReader(std::map<std::string, Token> entries, std::string label)
-        : entries_(std::move(entries)), label_(std::move(label))
-    {
-    }
+    EntryReader(Dictionary dict, std::string label) : dict_(std::move(dict)), label_(std::move(label)) {}
 
-    const Token& word(const char* key) const
+    const Entry& entry(const char* key) const
     {
-        const auto it = entries_.find(key);
-        if (it == entries_.end()) fail(label_, std::string("missing entry '") + key + "'");
-        return it->second;
+        const Entry* e = dict_.findEntry(key);
+        if (!e) fail(label_, std::string("missing entry '") + key + "'");
+        return *e;
+    }
+    const std::string& word(const char* key) const
+    {
+        const Entry& e = entry(key);
+        if (e.isDict() || e.values.size() != 1 || !(e.values[0].isWord() || e.values[0].isNumber()))
+            bad(key, "must be one word or number");
+        return e.values[0].text;
     }
     // A count: an integer in [0, 2^31) so every index fits an int.
     std::uint64_t count(const char* key) const
@@ -444,7 +375,7 @@ public:
     }
     std::uint64_t unsignedInt(const char* key, int base) const
     {
-        const std::string& text = word(key).text;
+        const std::string& text = word(key);
         const char* first = text.data();
         if (base == 16) {
             if (text.compare(0, 2, "0x") != 0) bad(key, "must be a hexadecimal number 0x...");
@@ -458,7 +389,7 @@ public:
     }
     double real(const char* key) const
     {
-        const std::string& text = word(key).text;
+        const std::string& text = word(key);
         double v = 0;
         const auto result = std::from_chars(text.data(), text.data() + text.size(), v);
         if (result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(v))
@@ -467,24 +398,38 @@ public:
     }
     [[noreturn]] void bad(const char* key, const std::string& what) const
     {
-        fail(label_ + ":" + std::to_string(word(key).line), std::string("'") + key + "' " + what);
+        fail(label_ + ":" + std::to_string(entry(key).valueLocation.line),
+             std::string("'") + key + "' " + what);
     }
 
 private:
-    std::map<std::string, Token> entries_;
+    Dictionary dict_;
     std::string label_;
 };
+
+// meshInfo as a dictionary (no #include: it is written, not edited); a syntax error is
+// the dictionary reader's message with the advice to re-run voronoiMesh.
+Dictionary parseMeshInfo(const Bytes& bytes, const std::string& label)
+{
+    ParseLimits limits;
+    limits.allowIncludes = false;
+    try {
+        return Dictionary::parse(std::string(bytes.begin(), bytes.end()), label, limits);
+    } catch (const UserError& e) {
+        throw UserError(std::string(e.what()) + "; " + rerunAdvice);
+    }
+}
 
 MeshInfo readMeshInfo(const fs::path& caseDir)
 {
     const std::string label = displayName(caseDir, "meshInfo");
     const Bytes bytes = readWholeFile(caseDir / voronoiMeshDirectory / "meshInfo", label);
-    const EntryReader entries(parseEntries(std::string(bytes.begin(), bytes.end()), label), label);
+    const EntryReader entries(parseMeshInfo(bytes, label), label);
 
     if (entries.unsignedInt("formatVersion", 10) != static_cast<std::uint64_t>(VoronoiMesh::formatVersion))
         entries.bad("formatVersion", "is not " + std::to_string(VoronoiMesh::formatVersion) +
                                          ", the only version this build reads");
-    if (entries.word("byteOrder").text != "littleEndian") entries.bad("byteOrder", "must be littleEndian");
+    if (entries.word("byteOrder") != "littleEndian") entries.bad("byteOrder", "must be littleEndian");
 
     MeshInfo info;
     info.nCells = entries.count("nCells");
@@ -662,11 +607,6 @@ void checkArraySizes(const VoronoiMesh& m)
 }
 
 }  // namespace
-
-std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size)
-{
-    return checksum(data, size);
-}
 
 void writeVoronoiMesh(const fs::path& caseDir, const VoronoiMesh& mesh)
 {

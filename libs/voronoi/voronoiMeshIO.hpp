@@ -4,7 +4,8 @@
 // little-endian binary files `cells`, `vertices`, `faces` and `bonds`
 // (docs/file-formats.md). Bonds are stored as the bonded face
 // pairs; their geometry is rebuilt on reading by the same function the
-// tessellation uses, so a read mesh is bit-identical to the written one.
+// tessellation uses, so a read mesh is bit-identical to the written one. Each binary
+// payload's checksum is core/checksum.hpp's fnv1aWords.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -34,10 +35,5 @@ struct VoronoiMeshSizes {
     std::uint64_t nCells = 0, nVertices = 0, nFaces = 0, nFaceVertices = 0, nBondedFaces = 0, nBonds = 0;
 };
 VoronoiMeshSizes readVoronoiMeshSizes(const std::filesystem::path& caseDir);
-
-// The payload checksum recorded in each binary file's header and in meshInfo
-// (docs/file-formats.md). Public so that the fuzz target (tests/fuzz/voronoiMesh)
-// can make mutated payloads pass it and reach the decoders behind it.
-std::uint64_t voronoiMeshChecksum(const unsigned char* data, std::size_t size);
 
 }  // namespace rockfrac

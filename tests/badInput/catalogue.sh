@@ -110,16 +110,33 @@ badCase contactModelTypo dem "rockProperties" "hertzMindlin" bondedDemFoam -case
 caseDict -case . constant/rockProperties -entry contact/model -set hertzMindlinn
 SETUP
 badCase negativeStrength dem "rockProperties" "tensileStrength" bondedDemFoam -case . <<'SETUP'
-caseDict -case . constant/rockProperties -entry bond/tensileStrength -set -28e6
+caseDict -case . constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set -28e6
 SETUP
 badCase poissonHalf dem "rockProperties" "poissonRatio" bondedDemFoam -case . <<'SETUP'
 caseDict -case . constant/rockProperties -entry rock/poissonRatio -set 0.5
 SETUP
 badCase modulusInMetres dem "rockProperties" "E" bondedDemFoam -case . <<'SETUP'
-caseDict -case . constant/rockProperties -entry bond/E -set "[0 1 0 0 0 0 0] 46e9"
+caseDict -case . constant/rockProperties -entry bond/voronoiQNSC/E -set "[0 1 0 0 0 0 0] 46e9"
 SETUP
 badCase emptyRockProperties dem "rockProperties" "" bondedDemFoam -case . <<'SETUP'
 : > constant/rockProperties
+SETUP
+badCase bondLawEntryTypo dem "rockProperties" "unknown entry 'tensileStrenght'" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/voronoiQNSC/tensileStrenght -add 28e6
+SETUP
+badCase bondLawOldLayout dem "rockProperties" "its own sub-dictionary" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/tensileStrength -add 28e6
+SETUP
+badCase bondLawNoCoefficients dem "rockProperties" "brittleBPM" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/model -set brittleBPM
+caseDict -case . constant/rockProperties -entry bond/brittleBPM -remove
+SETUP
+badCase brittleWithFractureEnergy dem "rockProperties" "unknown entry 'GI'" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry bond/model -set brittleBPM
+caseDict -case . constant/rockProperties -entry bond/brittleBPM/GI -add 10
+SETUP
+badCase contactLawCoefficients dem "rockProperties" "no coefficients of its own" bondedDemFoam -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry contact/hertzMindlin/stiffness -add 1
 SETUP
 badCase platesAtRest dem "loading" "stop criterion can never be met" bondedDemFoam -case . <<'SETUP'
 caseDict -case . constant/loading -entry plates/upper/velocity -set "(0 0 0)"
@@ -203,7 +220,13 @@ badCase femMaterialTypo fem "rockProperties" "kstDfh" feFractureSolver -case . <
 caseDict -case . constant/rockProperties -entry material -set kstDFH
 SETUP
 badCase weibullModulusZero fem "rockProperties" "weibullModulus" feFractureSolver -case . <<'SETUP'
-caseDict -case . constant/rockProperties -entry dfh/weibullModulus -set 0
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibullModulus -set 0
+SETUP
+badCase femOldLayout fem "rockProperties" "kstDfh { kst { ... } dfh { ... } }" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry dfh/seed -add 1
+SETUP
+badCase femCoefficientTypo fem "rockProperties" "unknown entry 'weibulModulus'" feFractureSolver -case . <<'SETUP'
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibulModulus -add 7
 SETUP
 badCase plateNeverTouches fem "loading" "never touches the specimen" feFractureSolver -case . <<'SETUP'
 caseDict -case . constant/loading -entry plates/startGap -set 1
@@ -222,7 +245,7 @@ badCase caseDictNoFile disc "constant/nothing" "" caseDict -case . constant/noth
 SETUP
 badCase caseDictNoEntry disc "rockProperties" "tensileStrenght" caseDict -case . constant/rockProperties -entry bond/tensileStrenght -value <<'SETUP'
 SETUP
-badCase caseDictSetInBroken disc "rockProperties" "" caseDict -case . constant/rockProperties -entry bond/E -set 1 <<'SETUP'
+badCase caseDictSetInBroken disc "rockProperties" "" caseDict -case . constant/rockProperties -entry bond/voronoiQNSC/E -set 1 <<'SETUP'
 echo "bond { E 46e9" >> constant/rockProperties
 SETUP
 

@@ -7,17 +7,23 @@ mkdir -p "$work/study/system" "$work/study/fem/constant"
 cd "$work/study"
 cat > fem/constant/rockProperties <<'DICT'
 FoamFile { format ascii; class dictionary; object rockProperties; }
-dfh
+kstDfh
 {
-    weibullModulus  5;
-    weibullStress   [1 -1 -2 0 0 0 0] 30e6;
-    seed            1;
+    dfh
+    {
+        weibullModulus  5;
+        weibullStress   [1 -1 -2 0 0 0 0] 30e6;
+        seed            1;
+    }
 }
 bond
 {
-    E               [1 -1 -2 0 0 0 0] 46e9;
-    tensileStrength [1 -1 -2 0 0 0 0] 28e6;
-    cohesion        [1 -1 -2 0 0 0 0] 42e6;
+    voronoiQNSC
+    {
+        E               [1 -1 -2 0 0 0 0] 46e9;
+        tensileStrength [1 -1 -2 0 0 0 0] 28e6;
+        cohesion        [1 -1 -2 0 0 0 0] 42e6;
+    }
 }
 DICT
 cp "$src/cases/experiments/BDT/granite/measurements" measurements
@@ -29,8 +35,8 @@ femDict()  # femDict <seeds values> <command>
     cat > system/calibrationDict <<DICT
 FoamFile { format ascii; class dictionary; object calibrationDict; }
 model fem; case "fem"; measurements "measurements"; command "$2";
-parameters { weibullModulus { entry dfh/weibullModulus; range (4 16); } }
-seeds { entry dfh/seed; values ($1); }
+parameters { weibullModulus { entry kstDfh/dfh/weibullModulus; range (4 16); } }
+seeds { entry kstDfh/dfh/seed; values ($1); }
 bobyqa { maxEvaluations 5; }
 target { response "postProcessing/failureLoad/0/failureLoad.dat"; }
 DICT
@@ -40,8 +46,8 @@ demDict()  # demDict <responseSurface settings>
     cat > system/calibrationDict <<DICT
 FoamFile { format ascii; class dictionary; object calibrationDict; }
 model dem; case "fem"; measurements "measurements"; command "false";
-parameters { E { entry bond/E; range (20e9 80e9); } tensileStrength { entry bond/tensileStrength; range (10e6 40e6); } }
-tied { cohesion { entry bond/cohesion; factor 1.5; of tensileStrength; } }
+parameters { E { entry bond/voronoiQNSC/E; range (20e9 80e9); } tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (10e6 40e6); } }
+tied { cohesion { entry bond/voronoiQNSC/cohesion; factor 1.5; of tensileStrength; } }
 responseSurface { $1 }
 target { response "postProcessing/plateForce/0/plateForce.dat"; }
 DICT
@@ -78,8 +84,8 @@ unchanged "bad measurements"
 # A parameter entry the case does not have, an unknown method.
 cp "$src/cases/experiments/BDT/granite/measurements" measurements
 femDict "1 2 3" "$here/weibullStandIn"
-sed -i 's|entry dfh/weibullModulus|entry dfh/weibulModulus|' system/calibrationDict
-expectUserError "has no entry 'dfh/weibulModulus'" calibrateModel -case .
+sed -i 's|entry kstDfh/dfh/weibullModulus|entry kstDfh/dfh/weibulModulus|' system/calibrationDict
+expectUserError "has no entry 'kstDfh/dfh/weibulModulus'" calibrateModel -case .
 femDict "1 2 3" "$here/weibullStandIn"
 expectUserError "-method responseSurface: the FEM calibration uses bobyqa" calibrateModel -case . -method responseSurface
 unchanged "bad dictionaries"

@@ -13,10 +13,10 @@ copyTutorial tutorials/BDT/granite "$work/study/bdt"
 cd "$work/study"
 caseDict -case bdt system/voronoiMeshDict -entry nCells -set 60 > /dev/null
 # The truth: the paper's Table 3 bond values, whatever the tutorial holds now.
-caseDict -case bdt constant/rockProperties -entry bond/E -set "[1 -1 -2 0 0 0 0] 46e9" > /dev/null
-caseDict -case bdt constant/rockProperties -entry bond/tensileStrength -set "[1 -1 -2 0 0 0 0] 28e6" > /dev/null
-caseDict -case bdt constant/rockProperties -entry bond/cohesion -set "[1 -1 -2 0 0 0 0] 42e6" > /dev/null
-caseDict -case bdt constant/rockProperties -entry bond/frictionCoefficient -set 0.8 > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/voronoiQNSC/E -set "[1 -1 -2 0 0 0 0] 46e9" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set "[1 -1 -2 0 0 0 0] 28e6" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/voronoiQNSC/cohesion -set "[1 -1 -2 0 0 0 0] 42e6" > /dev/null
+caseDict -case bdt constant/rockProperties -entry bond/voronoiQNSC/frictionCoefficient -set 0.8 > /dev/null
 
 # The truth: the solver itself on a copy of the case.
 cp -r bdt truth
@@ -39,10 +39,10 @@ prepare      "meshRock > log.meshRock 2>&1 && voronoiMesh > log.voronoiMesh 2>&1
 command      "bondedDemFoam";
 parameters
 {
-    E               { entry bond/E;               range (30e9 80e9); unit Pa; }
-    tensileStrength { entry bond/tensileStrength; range (15e6 35e6); unit Pa; }
+    E               { entry bond/voronoiQNSC/E;               range (30e9 80e9); unit Pa; }
+    tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (15e6 35e6); unit Pa; }
 }
-tied            { cohesion { entry bond/cohesion; factor 1.5; of tensileStrength; } }
+tied            { cohesion { entry bond/voronoiQNSC/cohesion; factor 1.5; of tensileStrength; } }
 responseSurface { levels 3; }
 bobyqa          { maxEvaluations $(bySize 30 6); initialStep 0.5; tolerance 1e-3; }
 target
@@ -63,8 +63,8 @@ value() { caseDict -case bdt constant/rockProperties -entry "$1" -value | awk '{
 
 calibrateModel -case . > log.responseSurface 2>&1 || fail "responseSurface: $(tail -3 log.responseSurface)"
 grep "response surfaces\|calibrated" log.responseSurface
-check responseSurface "$(value bond/E)" "$(value bond/tensileStrength)"
-awk -v c="$(value bond/cohesion)" -v s="$(value bond/tensileStrength)" 'BEGIN { exit !(c / s > 1.4999 && c / s < 1.5001) }' ||
+check responseSurface "$(value bond/voronoiQNSC/E)" "$(value bond/voronoiQNSC/tensileStrength)"
+awk -v c="$(value bond/voronoiQNSC/cohesion)" -v s="$(value bond/voronoiQNSC/tensileStrength)" 'BEGIN { exit !(c / s > 1.4999 && c / s < 1.5001) }' ||
     fail "cohesion is not 1.5 x tensile strength"
 grep -q "// calibrateModel [0-9-]*, study study, response surface of 9 runs" bdt/constant/rockProperties ||
     fail "no provenance comment in rockProperties"

@@ -11,7 +11,7 @@ variant() { rm -rf "$work/$1"; cp -r "$work/case" "$work/$1"; echo "$work/$1"; }
 
 v=$(variant contact); caseDict -case "$v" constant/rockProperties -entry contact/model -set hertzMindlinn > /dev/null
 expectUserError "hertzMindlin" bondedDemFoam -case "$v"
-v=$(variant strength); caseDict -case "$v" constant/rockProperties -entry bond/tensileStrength -set -28e6 > /dev/null
+v=$(variant strength); caseDict -case "$v" constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set -28e6 > /dev/null
 expectUserError "tensileStrength" bondedDemFoam -case "$v"
 v=$(variant bondModel); caseDict -case "$v" constant/rockProperties -entry bond/model -set springs > /dev/null
 expectUserError "voronoiQNSC" bondedDemFoam -case "$v"
@@ -19,7 +19,7 @@ v=$(variant speed); caseDict -case "$v" constant/loading -entry plates/upper/vel
 expectUserError "stop criterion can never be met" bondedDemFoam -case "$v"
 v=$(variant poisson); caseDict -case "$v" constant/rockProperties -entry rock/poissonRatio -set 0.5 > /dev/null
 expectUserError "poissonRatio" bondedDemFoam -case "$v"
-v=$(variant units); caseDict -case "$v" constant/rockProperties -entry bond/E -set "[0 1 0 0 0 0 0] 46e9" > /dev/null
+v=$(variant units); caseDict -case "$v" constant/rockProperties -entry bond/voronoiQNSC/E -set "[0 1 0 0 0 0 0] 46e9" > /dev/null
 expectUserError "E" bondedDemFoam -case "$v"
 for d in contact strength bondModel speed poisson units; do
     [ ! -d "$work/$d/0" ] && [ ! -e "$work/$d/VTK/cells_0.vtu" ] || fail "$d: a refused run wrote output"

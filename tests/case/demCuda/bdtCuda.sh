@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The BDT granite case on the CUDA backend against the CPU backend (needs a GPU;
+# The BDT granite case on the CUDA backend against the CPU backend, with the bond law
+# ${BOND_LAW:-voronoiQNSC} (needs a GPU;
 # exit 77 = skipped otherwise). Tolerance (docs/benchmarks.md): before the first bond
 # breaks the two force curves agree to 1e-6 of the peak force; the peak force agrees
 # to 2 % (fracture amplifies the round-off of a different summation order).
@@ -10,6 +11,8 @@ cd "$work/base"
 runApplication() { "$@" > "log.$1" 2>&1 || fail "$1 failed: $(tail -3 "log.$1")"; }
 runApplication meshRock
 runApplication voronoiMesh
+# BOND_LAW: the bond law of the run (gpu.demCuda.bdtBrittle runs brittleBPM).
+caseDict -case . constant/rockProperties -entry bond/model -set "${BOND_LAW:-voronoiQNSC}" > /dev/null
 dat=postProcessing/plateForce/0/plateForce.dat
 for backend in cpu cuda; do
     cp -r "$work/base" "$work/$backend"

@@ -11,13 +11,13 @@ variant() { rm -rf "$work/$1"; cp -r "$work/case" "$work/$1"; echo "$work/$1"; }
 
 v=$(variant material); caseDict -case "$v" constant/rockProperties -entry material -set kstDFH > /dev/null
 expectUserError "kstDfh" feFractureSolver -case "$v"
-v=$(variant weibull); caseDict -case "$v" constant/rockProperties -entry dfh/weibullModulus -set 0 > /dev/null
+v=$(variant weibull); caseDict -case "$v" constant/rockProperties -entry kstDfh/dfh/weibullModulus -set 0 > /dev/null
 expectUserError "weibullModulus" feFractureSolver -case "$v"
-v=$(variant erosion); caseDict -case "$v" constant/rockProperties -entry dfh/erodeAfterCracks -add 1.5 > /dev/null
+v=$(variant erosion); caseDict -case "$v" constant/rockProperties -entry kstDfh/dfh/erodeAfterCracks -add 1.5 > /dev/null
 expectUserError "erodeAfterCracks" feFractureSolver -case "$v"
-v=$(variant fractureEnergy); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] -30" > /dev/null
+v=$(variant fractureEnergy); caseDict -case "$v" constant/rockProperties -entry kstDfh/dfh/fractureEnergy -set "[N/m] -30" > /dev/null
 expectUserError "fractureEnergy" feFractureSolver -case "$v"
-v=$(variant fractureEnergyUnits); caseDict -case "$v" constant/rockProperties -entry dfh/fractureEnergy -set "[Pa] 30" > /dev/null
+v=$(variant fractureEnergyUnits); caseDict -case "$v" constant/rockProperties -entry kstDfh/dfh/fractureEnergy -set "[Pa] 30" > /dev/null
 expectUserError "fractureEnergy" feFractureSolver -case "$v"
 v=$(variant gap); caseDict -case "$v" constant/loading -entry plates/startGap -set 1 > /dev/null
 expectUserError "never touches the specimen" feFractureSolver -case "$v"

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # BDT failure-load distribution of the FEM (KST-DFH) against Table 5 (label validation):
 # the tutorial tutorials/BDT/<rock>FEM on one mesh, `seeds` seeds of the element thresholds
-# (dfh/seed), the failure load of each (first drop of 20 %) into <scratch>/results.dat
+# (kstDfh/dfh/seed), the failure load of each (first drop of 20 %) into <scratch>/results.dat
 # (seed, failureLoad), and the CDF plot against the measured sample (plotCdf). Passes when
 # every simulated failure load lies within the measured range (min..max of Table 5).
 # Usage: bdtCdf.sh <scratch> [granite|limestone] [seeds] [element size, default 2 mm]
-#        [dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
-#        [dfh/weibullStress Pa, default the tutorial's]
-#        [dfh/referenceVolume m^3, default the tutorial's].
+#        [kstDfh/dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
+#        [kstDfh/dfh/weibullStress Pa, default the tutorial's]
+#        [kstDfh/dfh/referenceVolume m^3, default the tutorial's].
 source "$(dirname "$0")/../caseTestFunctions"
 rock="${2:-granite}"
 seeds="${3:-10}"
@@ -20,16 +20,16 @@ copyTutorial "tutorials/BDT/${rock}FEM" "$work/mesh"
 cd "$work/mesh"
 caseDict -case . system/feMeshDict -entry elementSize -set "$h" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set 1 > /dev/null  # no VTK before the end
-[ -z "$fractureEnergy" ] || caseDict -case . constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
-[ -z "$weibullStress" ] || caseDict -case . constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
-[ -z "$referenceVolume" ] || caseDict -case . constant/rockProperties -entry dfh/referenceVolume -set "[m^3] $referenceVolume" > /dev/null
+[ -z "$fractureEnergy" ] || caseDict -case . constant/rockProperties -entry kstDfh/dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
+[ -z "$weibullStress" ] || caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
+[ -z "$referenceVolume" ] || caseDict -case . constant/rockProperties -entry kstDfh/dfh/referenceVolume -set "[m^3] $referenceVolume" > /dev/null
 meshRock > log.meshRock 2>&1 || fail "meshRock: $(tail -3 log.meshRock)"
 printf '# seed [-]\tfailureLoad [N]\n' > "$work/results.dat"
 for seed in $(seq 1 "$seeds"); do
     c="$work/seed$seed"
     mkdir -p "$c"
     cp -r system constant "$c"
-    caseDict -case "$c" constant/rockProperties -entry dfh/seed -set "$seed" > /dev/null
+    caseDict -case "$c" constant/rockProperties -entry kstDfh/dfh/seed -set "$seed" > /dev/null
     (cd "$c" && OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} feFractureSolver > log.feFractureSolver 2>&1) ||
         fail "feFractureSolver seed $seed: $(tail -3 "$c/log.feFractureSolver")"
     load=$(awk -F'\t' '!/^#/ { print $2 }' "$c/postProcessing/failureLoad/0/failureLoad.dat")

@@ -27,7 +27,7 @@ for seed in $(seq 1 "$seeds"); do
     awk -F'\t' '!/^#/ { print $2 }' "$out/postProcessing/failureLoad/0/failureLoad.dat" >> "$work/freefem.txt"
 done
 
-# feFractureSolver: one mesh, one case per seed (dfh/seed keys the element thresholds).
+# feFractureSolver: one mesh, one case per seed (kstDfh/dfh/seed keys the element thresholds).
 copyTutorial tutorials/BDT/graniteFEM "$work/mesh"
 cd "$work/mesh"
 caseDict -case . system/meshRockDict -entry disc/thickness -set "$thickness" > /dev/null
@@ -36,13 +36,13 @@ cp "$src/tests/case/fem/arcLoadingFailure" constant/loading
 # Twice the pressure rate of the Hondros check (6.4 kN/ms on this disc): KE / W_ext stays
 # below 0.01 % before failure, so the run is still quasi-static.
 caseDict -case . constant/loading -entry arcLoad/pressureRate -set "[Pa/s] 3.7e11" > /dev/null
-caseDict -case . constant/rockProperties -entry dfh/referenceVolume -set "[m^3] $vref" > /dev/null
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/referenceVolume -set "[m^3] $vref" > /dev/null
 # The FreeFEM script's defaults (m = 7, sigma_w = 21 MPa), whatever the tutorial is calibrated to.
-caseDict -case . constant/rockProperties -entry dfh/weibullModulus -set 7 > /dev/null
-caseDict -case . constant/rockProperties -entry dfh/weibullStress -set "[Pa] 21e6" > /dev/null
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibullModulus -set 7 > /dev/null
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/weibullStress -set "[Pa] 21e6" > /dev/null
 # The FreeFEM script has the paper's complete cracks (a direction fails at its threshold),
 # not the tutorial's crack band: compare like with like.
-caseDict -case . constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] 0" > /dev/null
+caseDict -case . constant/rockProperties -entry kstDfh/dfh/fractureEnergy -set "[N/m] 0" > /dev/null
 caseDict -case . system/controlDict -entry endTime -set 2e-3 > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set 2e-3 > /dev/null
 meshRock > log.meshRock 2>&1 || fail "meshRock: $(tail -3 log.meshRock)"
@@ -50,7 +50,7 @@ for seed in $(seq 1 "$seeds"); do
     c="$work/fe/seed$seed"
     mkdir -p "$c"
     cp -r system constant "$c"
-    caseDict -case "$c" constant/rockProperties -entry dfh/seed -set "$seed" > /dev/null
+    caseDict -case "$c" constant/rockProperties -entry kstDfh/dfh/seed -set "$seed" > /dev/null
     (cd "$c" && OMP_NUM_THREADS=1 feFractureSolver > log.feFractureSolver 2>&1) ||
         fail "feFractureSolver seed $seed: $(tail -3 "$c/log.feFractureSolver")"
     [ -f "$c/postProcessing/failureLoad/0/failureLoad.dat" ] || fail "feFractureSolver seed $seed: no failure"

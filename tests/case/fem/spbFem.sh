@@ -14,9 +14,9 @@
 #        [endTime s, default the tutorial's]
 #        [shape seed offset, default 0: added to each rock's meshRock seed, for an ensemble
 #         of generated shapes of the same volume and Zingg ratios]
-#        [dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
-#        [dfh/weibullStress Pa, default the tutorial's]
-#        [dfh/seed, default the tutorial's: the element thresholds' random stream].
+#        [kstDfh/dfh/fractureEnergy N/m, default the tutorial's; 0: the paper's complete cracks]
+#        [kstDfh/dfh/weibullStress Pa, default the tutorial's]
+#        [kstDfh/dfh/seed, default the tutorial's: the element thresholds' random stream].
 source "$(dirname "$0")/../caseTestFunctions"
 rockType="${2:-granite}"
 h="${3:-}"
@@ -31,7 +31,6 @@ thresholdSeed="${12:-}"
 measured="$src/cases/experiments/SPB/$rockType/measurements"
 copyTutorial "tutorials/SPB/${rockType}FEM" "$work/tutorial"
 cd "$work/tutorial"
-rm -f rocks && cp -L "$src/tutorials/SPB/${rockType}FEM/rocks" rocks  # a relative link in the tutorial
 rocks="${5:-$(caseDict -case . rocks -keywords)}"
 noFailure=""
 printf '# rock [-]\tfailureLoad [N]\tmeasured [N]\tratio [-]\n' > "$work/results.dat"
@@ -51,9 +50,9 @@ for rock in $rocks; do
         caseDict -case "$c" constant/loading -entry plates/crushingPressure $verb "[Pa] $crushing" > /dev/null
     fi
     [ -z "$endTime" ] || caseDict -case "$c" system/controlDict -entry endTime -set "$endTime" > /dev/null
-    [ -z "$fractureEnergy" ] || caseDict -case "$c" constant/rockProperties -entry dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
-    [ -z "$weibullStress" ] || caseDict -case "$c" constant/rockProperties -entry dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
-    [ -z "$thresholdSeed" ] || caseDict -case "$c" constant/rockProperties -entry dfh/seed -set "$thresholdSeed" > /dev/null
+    [ -z "$fractureEnergy" ] || caseDict -case "$c" constant/rockProperties -entry kstDfh/dfh/fractureEnergy -set "[N/m] $fractureEnergy" > /dev/null
+    [ -z "$weibullStress" ] || caseDict -case "$c" constant/rockProperties -entry kstDfh/dfh/weibullStress -set "[Pa] $weibullStress" > /dev/null
+    [ -z "$thresholdSeed" ] || caseDict -case "$c" constant/rockProperties -entry kstDfh/dfh/seed -set "$thresholdSeed" > /dev/null
     [ -z "$massStep" ] || caseDict -case "$c" system/controlDict -entry massScalingTimeStep -set "$massStep" > /dev/null
     caseDict -case "$c" system/controlDict -entry writeInterval -set 1 > /dev/null  # VTK at the end only
     (cd "$c" && meshRock > log.meshRock 2>&1) || fail "meshRock $rock: $(tail -3 "$c/log.meshRock")"

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "../common/fuzzTarget.hpp"
+#include "core/checksum.hpp"
 #include "core/error.hpp"
 #include "io/stateFile.hpp"
 

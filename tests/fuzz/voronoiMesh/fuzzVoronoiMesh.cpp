@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../common/fuzzTarget.hpp"
+#include "core/checksum.hpp"
 #include "core/error.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
 
@@ -55,8 +56,7 @@ void fixChecksums(std::vector<std::string>& parts)
     for (std::size_t k = 1; k < parts.size(); ++k) {
         std::string& file = parts[k];
         if (file.size() < headerBytes) continue;
-        const std::uint64_t sum = voronoiMeshChecksum(
-            reinterpret_cast<const unsigned char*>(file.data()) + headerBytes, file.size() - headerBytes);
+        const std::uint64_t sum = fnv1aWords(file.data() + headerBytes, file.size() - headerBytes);
         for (int i = 0; i < 8; ++i) file[48 + i] = static_cast<char>(sum >> (8 * i));
         sums[k - 1] = sum;
     }

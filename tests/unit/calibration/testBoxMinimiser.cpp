@@ -69,7 +69,7 @@ TEST_CASE("a parameter set asked for again reuses its objective", "[calibration]
 {
     CalibrationStudy study;
     study.parameters.push_back(
-        {"weibullStress", "constant/rockProperties", "dfh/weibullStress", "Pa", 8e6, 12e6});
+        {"weibullStress", "constant/rockProperties", "kstDfh/dfh/weibullStress", "Pa", 8e6, 12e6});
     int simulations = 0;
     const Objective simulated = [&](const std::vector<double>& x) {
         ++simulations;

@@ -11,6 +11,7 @@
 #include "crusher/feedRock.hpp"
 #include "dem/demModel.hpp"
 #include "voronoi/tessellation.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -271,7 +272,9 @@ FedRun runFed(int threads, std::uint64_t seed)
     omp_set_num_threads(threads);
     DemParameters p = testParameters();
     p.gravity = {0.0, 0.0, -200.0};  // faster falling: a short test
-    p.bond_youngs_modulus = 4.6e9;   // 10 x softer than granite: a 3 x larger step
+    VoronoiQnscBondLaw::Parameters q;
+    q.youngs_modulus = 4.6e9;   // 10 x softer than granite: a 3 x larger step
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.rock_youngs_modulus = 7.7e9;
     FeedSpec spec;
     spec.size_min = 0.015;

@@ -24,6 +24,7 @@
 
 #include "../dem/boxMeshes.hpp"
 #include "dem/demModel.hpp"
+#include "dem/voronoiQnscBond.hpp"
 #include "dem/gjk.hpp"
 #include "geometry/crusherGeometry.hpp"
 
@@ -400,7 +401,11 @@ TEST_CASE("experiment: a cell thrown at the CH660 liners with damping, energy ba
     const int trials = std::getenv("LB_TRIALS") ? std::atoi(std::getenv("LB_TRIALS")) : 20;
     for (int trial = 0; trial < trials; ++trial) {
         const int nb = std::getenv("LB_BLOCK") ? std::atoi(std::getenv("LB_BLOCK")) : 1;
-        if (nb > 1) p.bond_tensile_strength = p.bond_cohesion = 1e12;
+        if (nb > 1) {
+            VoronoiQnscBondLaw::Parameters q;
+            q.tensile_strength = q.cohesion = 1e12;
+            p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
+        }
         DemModel model(test::boxBlockMesh(nb, nb, nb, {cell, cell, cell}, rd, nb > 1), p);
         model.addTriSurface(s.points, s.triangles);
         // A point on the surface at mid height, the cell 3 mm off it along the radial

@@ -5,6 +5,8 @@
 
 #include "boxMeshes.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
+#include "dem/brittleBpmBond.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
 #include "demBackend.hpp"
@@ -26,23 +28,37 @@ VoronoiMesh oneBondMesh()
     return mesh;
 }
 
-DemParameters quietParameters()
+// The paper's law with G_I = G_II = 100 N/m (d_f > d_e0, see theory-dem.md).
+VoronoiQnscBondLaw::Parameters quietQnsc()
+{
+    VoronoiQnscBondLaw::Parameters q;
+    q.fracture_energy_I = q.fracture_energy_II = 100.0;
+    return q;
+}
+
+DemParameters quietParameters(const VoronoiQnscBondLaw::Parameters& q = quietQnsc())
 {
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
     p.bond_damping = 0.0;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 100.0;  // d_f > d_e0 (see theory-dem.md)
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     return p;
+}
+
+// The coefficients of the case's voronoiQNSC law.
+const VoronoiQnscBondLaw::Parameters& qnscOf(const DemParameters& p)
+{
+    return dynamic_cast<const VoronoiQnscBondLaw&>(*p.bond_law).parameters();
 }
 
 double normalModulus(const DemParameters& p)
 {
-    const double E = p.bond_youngs_modulus, nu = p.bond_poisson_ratio;
+    const double E = qnscOf(p).youngs_modulus, nu = qnscOf(p).poisson_ratio;
     return E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
 }
 double shearModulus(const DemParameters& p)
 {
-    return p.bond_youngs_modulus / (2.0 * (1.0 + p.bond_poisson_ratio));
+    return qnscOf(p).youngs_modulus / (2.0 * (1.0 + qnscOf(p).poisson_ratio));
 }
 
 // Cell 1 displaced by d from its place (cell 0 fixed), forces evaluated; returns the force on cell 0.
@@ -66,8 +82,8 @@ struct ImposedBond {
 
 double qnsc(const DemParameters& p, double sigma, double tau)
 {
-    const double tensile = std::max(sigma, 0.0) / p.bond_tensile_strength;
-    const double shear = tau / (p.bond_cohesion - p.bond_friction * sigma);
+    const double tensile = std::max(sigma, 0.0) / qnscOf(p).tensile_strength;
+    const double shear = tau / (qnscOf(p).cohesion - qnscOf(p).friction * sigma);
     return tensile * tensile + shear * shear;
 }
 
@@ -78,8 +94,8 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;             // d_e0
-    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;  // d_f
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;                // d_e0
+    const double rupture = 2.0 * qnscOf(p).fracture_energy_I / qnscOf(p).tensile_strength;  // d_f
     REQUIRE(rupture > onset);
     const int n_increments = 4000;
     const double last = 1.2 * rupture;
@@ -92,13 +108,13 @@ TEST_CASE("one bond under imposed opening: linear, linear softening, work = G_f 
         peak = std::max(peak, force);
         // The analytic law: elastic, then linear softening to zero at d_f.
         const double expected = opening <= onset    ? kn * opening / reference_length * bond_area
-                                : opening < rupture ? p.bond_tensile_strength * bond_area *
+                                : opening < rupture ? qnscOf(p).tensile_strength * bond_area *
                                                           (rupture - opening) / (rupture - onset)
                                                     : 0.0;
-        REQUIRE(force == Approx(expected).margin(1e-9 * p.bond_tensile_strength * bond_area));
+        REQUIRE(force == Approx(expected).margin(1e-9 * qnscOf(p).tensile_strength * bond_area));
     }
-    const double separation_energy = p.fracture_energy_mode_I * bond_area;
-    CHECK(peak == Approx(p.bond_tensile_strength * bond_area).epsilon(1e-3));
+    const double separation_energy = qnscOf(p).fracture_energy_I * bond_area;
+    CHECK(peak == Approx(qnscOf(p).tensile_strength * bond_area).epsilon(1e-3));
     CHECK(work == Approx(separation_energy).epsilon(0.01));
     CHECK(bond.model.energies().fracture == Approx(separation_energy).epsilon(0.01));
     CHECK(bond.bonds().stage[0] == bondBroken);
@@ -120,7 +136,7 @@ TEST_CASE("bond size effect: an interface of area A opens at sigma-bar (A_ref/A)
     for (const Vec3 direction : {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}}) {
         // Opening (tension, onset at sigma-bar) or sliding (pure shear, onset at C).
         const bool tension = direction.x > 0.0;
-        const double expected = factor * (tension ? p.bond_tensile_strength : p.bond_cohesion);
+        const double expected = factor * (tension ? qnscOf(p).tensile_strength : qnscOf(p).cohesion);
         const double step = 1e-4 * expected * reference_length / (tension ? kn : kt);
         ImposedBond bond(p);
         REQUIRE(bond.model.interfaces().strength_scale.size() == 1);
@@ -151,7 +167,7 @@ TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the s
     for (double sigma : {0.0, -10e6, -40e6, -80e6}) {
         ImposedBond bond(p);
         const double normal_opening = sigma * reference_length / kn;
-        const double expected = p.bond_cohesion - p.bond_friction * sigma;
+        const double expected = qnscOf(p).cohesion - qnscOf(p).friction * sigma;
         const double step = 1e-4 * expected * reference_length / kt;
         double shear = 0.0;
         while (bond.bonds().stage[0] == bondElastic && shear < 2.0 * expected * reference_length / kt) {
@@ -168,10 +184,11 @@ TEST_CASE("pure shear onset at tau-bar = C - mu sigma, compression raising the s
 
 TEST_CASE("mixed-mode onset lies on the QNSC ellipse; G_f from Benzeggagh-Kenane", "[dem][bond]")
 {
-    DemParameters p = quietParameters();
-    p.fracture_energy_mode_I = 100.0;
-    p.fracture_energy_mode_II = 300.0;
-    p.bk_exponent = 2.0;
+    VoronoiQnscBondLaw::Parameters q = quietQnsc();
+    q.fracture_energy_I = 100.0;
+    q.fracture_energy_II = 300.0;
+    q.bk_exponent = 2.0;
+    const DemParameters p = quietParameters(q);
     const double kn = normalModulus(p), kt = shearModulus(p);
     for (double angle_degrees : {10.0, 30.0, 45.0, 60.0, 80.0}) {
         ImposedBond bond(p);
@@ -192,8 +209,8 @@ TEST_CASE("mixed-mode onset lies on the QNSC ellipse; G_f from Benzeggagh-Kenane
         CHECK(bond.bonds().onset_stress[0] == Approx(std::hypot(sigma0, tau0)).epsilon(1e-9));
         const double mixity = tau0 * tau0 / (sigma0 * sigma0 + tau0 * tau0);
         const double fracture_energy =
-            p.fracture_energy_mode_I +
-            (p.fracture_energy_mode_II - p.fracture_energy_mode_I) * mixity * mixity;
+            qnscOf(p).fracture_energy_I +
+            (qnscOf(p).fracture_energy_II - qnscOf(p).fracture_energy_I) * mixity * mixity;
         CHECK(bond.bonds().rupture_displacement[0] ==
               Approx(2.0 * fracture_energy / bond.bonds().onset_stress[0]).epsilon(1e-12));
     }
@@ -204,7 +221,7 @@ TEST_CASE("compression never damages a bond", "[dem][bond]")
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;
     for (int i = 1; i <= 100; ++i) {
         const double opening = -50.0 * onset * i / 100.0;
         const double force = bond.forceAt({opening, 0.0, 0.0}).x;
@@ -219,8 +236,8 @@ TEST_CASE("damage never decreases on unloading and reloading", "[dem][bond]")
     const DemParameters p = quietParameters();
     ImposedBond bond(p);
     const double kn = normalModulus(p);
-    const double onset = p.bond_tensile_strength * reference_length / kn;
-    const double rupture = 2.0 * p.fracture_energy_mode_I / p.bond_tensile_strength;
+    const double onset = qnscOf(p).tensile_strength * reference_length / kn;
+    const double rupture = 2.0 * qnscOf(p).fracture_energy_I / qnscOf(p).tensile_strength;
     const double peak_opening = onset + 0.5 * (rupture - onset);
     for (int i = 1; i <= 200; ++i) bond.forceAt({peak_opening * i / 200.0, 0.0, 0.0});
     const double damage = bond.bonds().damage[0];
@@ -278,19 +295,20 @@ TEST_CASE("bond damping: beta k eps-dot A/n (absolute) and 2 zeta sqrt(m*/k) (cr
 
 TEST_CASE("unknown law names are user errors listing the known ones", "[dem][registry]")
 {
-    DemParameters p = quietParameters();
-    p.bond_law = "timoshenkoBeam";
-    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("voronoiQNSC"));
-    p = quietParameters();
-    p.contact_law = "linearSpring";
-    CHECK_THROWS_WITH(DemModel(oneBondMesh(), p), Catch::Contains("hertzMindlin"));
+    const Dictionary empty("bond", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().make("timoshenkoBeam", empty),
+                      Catch::Contains("voronoiQNSC") && Catch::Contains("brittleBPM"));
+    CHECK_THROWS_WITH(contactLaws().make("linearSpring", empty), Catch::Contains("hertzMindlin"));
     CHECK_THROWS_AS(dampingReadingFromName("seconds"), UserError);
+    DemParameters p = quietParameters();
+    p.bond_law = nullptr;
+    CHECK_THROWS_AS(DemModel(oneBondMesh(), p), UserError);
 }
 
 TEST_CASE("a bond broken in shear under compression books its compressive energy as fracture",
           "[dem][bond][energy]")
 {
-    BondMaterial m;
+    VoronoiQnscLaw::Coefficients m;
     m.normal_modulus = 55e9;
     m.shear_modulus = 18e9;
     m.tensile_strength = 28e6;
@@ -318,4 +336,158 @@ TEST_CASE("a bond broken in shear under compression books its compressive energy
                      << compressive);
     CHECK(fracture > compressive);
     CHECK(fracture == Approx(strain_before).epsilon(0.02));
+}
+
+// ---- brittleBPM: the bonded-particle model's brittle bond ---------------------------
+
+namespace {
+
+DemParameters brittleParameters(const BrittleBpmBondLaw::Parameters& b = {})
+{
+    DemParameters p = quietParameters();
+    p.bond_law = std::make_shared<BrittleBpmBondLaw>(b);
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "brittleBPM under imposed opening: linear to sigma-bar A/n, then nothing; dissipates the stored energy",
+    "[dem][bond][brittle]")
+{
+    const BrittleBpmBondLaw::Parameters b;
+    const DemParameters p = brittleParameters(b);
+    ImposedBond bond(p);
+    const double kn = normalModulus(quietParameters());  // the same E and nu: the same k_n
+    REQUIRE(p.bond_law->normalModulus() == kn);
+    const double onset = b.tensile_strength * reference_length / kn;  // where sigma = sigma-bar
+    const int n = 2000;
+    const double last = 2.0 * onset;
+    double work = 0.0, previous = 0.0, peak = 0.0;
+    for (int i = 1; i <= n; ++i) {
+        const double opening = last * i / n;
+        const double force = bond.forceAt({opening, 0.0, 0.0}).x;
+        work += 0.5 * (force + previous) * (last / n);
+        previous = force;
+        peak = std::max(peak, force);
+        const double expected =
+            opening < onset * (1.0 - 1e-12) ? kn * opening / reference_length * bond_area : 0.0;
+        REQUIRE(force == Approx(expected).margin(1e-9 * b.tensile_strength * bond_area));
+    }
+    // The largest force is the last sample below the strength; the bond broke at the first at or above it.
+    CHECK(peak < b.tensile_strength * bond_area);
+    CHECK(peak >= (1.0 - 1.01 * 2.0 / n) * b.tensile_strength * bond_area);  // within one sample
+    const BondArrays bonds = bond.bonds();
+    CHECK(bonds.stage[0] == bondBroken);
+    CHECK(bonds.damage[0] == 1.0);
+    CHECK(bond.model.counters().bonds_broken == 1);
+    // Dissipated: the strain energy the bond held at the step it broke, 1/2 sigma^2 A l / k_n at that
+    // step's opening (one sample past sigma-bar), and the work of the sampled curve up to there.
+    const double broke_at = std::ceil(onset / (last / n) - 1e-9) * (last / n);
+    const double stored = 0.5 * kn * broke_at * broke_at / reference_length * bond_area;
+    CHECK(bond.model.energies().fracture == Approx(stored).epsilon(1e-9));
+    CHECK(bond.model.energies().fracture ==
+          Approx(0.5 * b.tensile_strength * b.tensile_strength * bond_area * reference_length / kn)
+              .epsilon(2.0 * 2.0 / n));
+    CHECK(work == Approx(0.5 * b.tensile_strength * b.tensile_strength * bond_area * reference_length / kn)
+                      .epsilon(2.0 * 2.0 / n));
+}
+
+TEST_CASE("brittleBPM fails in shear at tau-bar = C - mu sigma, compression raising it",
+          "[dem][bond][brittle]")
+{
+    const BrittleBpmBondLaw::Parameters b;
+    const DemParameters p = brittleParameters(b);
+    const double kn = p.bond_law->normalModulus(), kt = p.bond_law->shearModulus();
+    for (double sigma : {0.0, -10e6, -40e6}) {
+        ImposedBond bond(p);
+        const double normal_opening = sigma * reference_length / kn;
+        const double expected = b.cohesion - b.friction * sigma;
+        const double step = 1e-4 * expected * reference_length / kt;
+        double shear = 0.0;
+        while (bond.bonds().stage[0] == bondElastic && shear < 2.0 * expected * reference_length / kt) {
+            shear += step;
+            bond.forceAt({normal_opening, shear, 0.0});
+        }
+        INFO("sigma = " << sigma);
+        REQUIRE(bond.bonds().stage[0] == bondBroken);  // no softening stage: broken at once
+        CHECK(kt * (shear - step) / reference_length < expected);
+        CHECK(kt * shear / reference_length >= expected);
+        CHECK(bond.bonds().onset_stress[0] == Approx(expected).epsilon(2e-4));
+    }
+}
+
+TEST_CASE("brittleBPM tests tension and shear each on its own, where the QNSC ellipse has failed",
+          "[dem][bond][brittle]")
+{
+    BrittleBpmLaw::Coefficients m;
+    m.normal_modulus = 55e9;
+    m.shear_modulus = 18e9;
+    m.tensile_strength = 28e6;
+    m.cohesion = 42e6;
+    m.friction = 0.8;
+    const double sigma = 0.9 * m.tensile_strength;
+    const double tau = 0.9 * (m.cohesion - m.friction * sigma);
+    CHECK_FALSE(BrittleBpmLaw::fails(m, sigma, tau * tau));  // 0.81 + 0.81 > 1 on the QNSC ellipse
+    CHECK(BrittleBpmLaw::fails(m, m.tensile_strength, 0.0));
+    CHECK(BrittleBpmLaw::fails(m, 0.0, m.cohesion * m.cohesion));
+    CHECK(BrittleBpmLaw::fails(m, m.cohesion / m.friction, 0.0));  // C - mu sigma <= 0
+    CHECK_FALSE(BrittleBpmLaw::fails(
+        m, -1e9, 0.99 * 0.99 * (m.cohesion + m.friction * 1e9) * (m.cohesion + m.friction * 1e9)));
+    // The same state through the law: intact, force and energy of the elastic bond.
+    BondInput in;
+    in.normal = {1.0, 0.0, 0.0};
+    in.reference_length = reference_length;
+    in.bond_area = bond_area;
+    in.opening = {sigma * reference_length / m.normal_modulus, tau * reference_length / m.shear_modulus, 0.0};
+    BondHistory h;
+    const BondOutput out = BrittleBpmLaw::evaluate(m, in, h);
+    CHECK(h.stage == bondElastic);
+    CHECK(out.force_on_i.x == Approx(sigma * bond_area).epsilon(1e-12));
+    CHECK(out.force_on_i.y == Approx(tau * bond_area).epsilon(1e-12));
+    CHECK(out.fracture_dissipation == 0.0);
+    // Past the cut-off: broken, no force, and the strain energy it held dissipated.
+    in.opening.x *= 1.2;
+    const double stored =
+        0.5 * bond_area / reference_length *
+        (m.normal_modulus * in.opening.x * in.opening.x + m.shear_modulus * in.opening.y * in.opening.y);
+    const BondOutput broken = BrittleBpmLaw::evaluate(m, in, h);
+    CHECK(h.stage == bondBroken);
+    CHECK(h.damage == 1.0);
+    CHECK(norm(broken.force_on_i) == 0.0);
+    CHECK(broken.strain_energy == 0.0);
+    CHECK(broken.fracture_dissipation == Approx(stored).epsilon(1e-12));
+    CHECK(norm(BrittleBpmLaw::evaluate(m, in, h).force_on_i) == 0.0);  // and stays broken
+}
+
+TEST_CASE("bond laws are selected by keyword and read their own sub-dictionary", "[dem][registry]")
+{
+    const Dictionary bond = Dictionary::parse(R"(
+        model brittleBPM;
+        voronoiQNSC { E 46e9; poissonRatio 0.25; tensileStrength 28e6; cohesion 42e6;
+                      frictionCoefficient 0.8; GI 10; GII 10; }
+        brittleBPM  { E 40e9; poissonRatio 0.2; tensileStrength 20e6; cohesion 30e6; frictionCoefficient 0.5; }
+    )",
+                                              "rockProperties");
+    const std::shared_ptr<BondLawModel> law = bondLaws().select(bond, "model");
+    CHECK(std::string(law->type()) == "brittleBPM");
+    const auto& b = dynamic_cast<const BrittleBpmBondLaw&>(*law).parameters();
+    CHECK(b.youngs_modulus == 40e9);
+    CHECK(b.tensile_strength == 20e6);
+    CHECK(law->shearModulus() == Approx(40e9 / 2.4).epsilon(1e-15));
+    // An entry the law does not know is refused at its line, naming the known ones.
+    const Dictionary typo = Dictionary::parse(
+        "model brittleBPM;\nbrittleBPM { E 40e9; poissonRatio 0.2; tensileStrength 20e6; cohesion 30e6;\n"
+        "frictionCoefficient 0.5; GI 10; }\n",
+        "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(typo, "model"), Catch::Contains("rockProperties:3") &&
+                                                            Catch::Contains("unknown entry 'GI'") &&
+                                                            Catch::Contains("frictionCoefficient"));
+    // The law's sub-dictionary is required.
+    const Dictionary missing = Dictionary::parse("model voronoiQNSC;\n", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(missing, "model"), Catch::Contains("voronoiQNSC"));
+    // An unknown model: the line of the keyword, the known names.
+    const Dictionary unknown = Dictionary::parse("model beam;\n", "rockProperties");
+    CHECK_THROWS_WITH(bondLaws().select(unknown, "model"),
+                      Catch::Contains("rockProperties:1") && Catch::Contains("voronoiQNSC, brittleBPM"));
 }

@@ -14,6 +14,7 @@
 #include "dem/surfaceFeatures.hpp"
 #include "demBackend.hpp"
 #include "geometry/triSurface.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -821,9 +822,11 @@ TEST_CASE("a block crushed onto a floor read from an STL file moves as on the an
         readStl(std::string(ROCKFRAC_SOURCE_DIR) + "/tests/unit/dem/data/floorPlate.stl");
     REQUIRE(floor.triangles.size() == 32);
     DemParameters p = quietContactParameters();
-    p.bond_tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
-    p.bond_cohesion = 3e5;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.05;  // brittle: d_f of a few um
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = 2e5;  // weak bonds: the sheared block breaks within the run
+    q.cohesion = 3e5;
+    q.fracture_energy_I = q.fracture_energy_II = 0.05;  // brittle: d_f of a few um
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     const VoronoiMesh mesh = test::boxBlockMesh(
         2, 2, 2, {contact_cell_size, contact_cell_size, contact_cell_size}, contact_dilation);
     DemModel analytic(mesh, p), fromStl(mesh, p);

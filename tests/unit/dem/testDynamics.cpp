@@ -11,6 +11,7 @@
 #include "dem/demModel.hpp"
 #include "demBackend.hpp"
 #include "voronoi/tessellation.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -67,7 +68,9 @@ TEST_CASE("a torque-free spinning cell with asymmetric inertia keeps its angular
 TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][dynamics][energy]")
 {
     DemParameters p = quietDynamicsParameters();
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;  // no breakage
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;  // no breakage
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
                                       dynamics_dilation),
                    p);
@@ -100,9 +103,11 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
 {
     omp_set_num_threads(threads);
     DemParameters p;
-    p.bond_tensile_strength = 2e5;
-    p.bond_cohesion = 3e5;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = 2e5;
+    q.cohesion = 3e5;
+    q.fracture_energy_I = q.fracture_energy_II = 0.5;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
     DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
@@ -144,7 +149,9 @@ TEST_CASE("gather determinism: 1 and 2 OpenMP threads give bitwise identical pos
 TEST_CASE("a time step far too large is reported, naming the step and the cause", "[dem][safety]")
 {
     DemParameters p = quietDynamicsParameters();
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel model(test::boxBlockMesh(3, 3, 3, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
                                       dynamics_dilation),
                    p);
@@ -164,7 +171,9 @@ TEST_CASE("a time step far too large is reported, naming the step and the cause"
 TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]")
 {
     DemParameters p = quietDynamicsParameters();
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     const int side = 20;
     DemModel model(
         test::boxBlockMesh(side, side, side, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
@@ -187,9 +196,11 @@ TEST_CASE("benchmark: intact bonded block, cell-steps per second", "[.benchmark]
 TEST_CASE("restart: a model rebuilt from the exposed state continues bitwise", "[dem][restart]")
 {
     DemParameters p;
-    p.bond_tensile_strength = 2e5;
-    p.bond_cohesion = 3e5;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = 2e5;
+    q.cohesion = 3e5;
+    q.fracture_energy_I = q.fracture_energy_II = 0.5;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
     const VoronoiMesh mesh =
@@ -283,12 +294,14 @@ TEST_CASE("a wall velocity set to its value keeps the forces; a new value re-eva
 TEST_CASE("critical time step: two bonded cells against the analytic omega = sqrt(2K/m)", "[dem][timestep]")
 {
     DemParameters p = quietDynamicsParameters();
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel model(test::boxBlockMesh(2, 1, 1, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
                                       dynamics_dilation),
                    p);
-    const double k_n = p.bond_youngs_modulus * (1.0 - p.bond_poisson_ratio) /
-                       ((1.0 + p.bond_poisson_ratio) * (1.0 - 2.0 * p.bond_poisson_ratio));
+    const double k_n = q.youngs_modulus * (1.0 - q.poisson_ratio) /
+                       ((1.0 + q.poisson_ratio) * (1.0 - 2.0 * q.poisson_ratio));
     // Four corner bonds of A/4 each over l_ij = dynamics_cell_size: K = k_n A / l in parallel.
     const double K = k_n * dynamics_cell_size * dynamics_cell_size / dynamics_cell_size;
     const double m = p.rock_density * dynamics_cell_size * dynamics_cell_size * dynamics_cell_size;
@@ -329,7 +342,9 @@ TEST_CASE("critical time step: a damped bonded block is stable just below it and
 {
     for (double zeta : {0.0, 0.3}) {
         DemParameters p = quietDynamicsParameters();
-        p.bond_tensile_strength = p.bond_cohesion = 1e12;
+        VoronoiQnscBondLaw::Parameters q;
+        q.tensile_strength = q.cohesion = 1e12;
+        p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
         p.bond_damping = zeta;
         p.damping_reading = DampingReading::criticalFraction;
         p.energy_growth_tolerance = 1e300;  // judge by the kinetic energy only
@@ -354,7 +369,9 @@ TEST_CASE("a bonded 100-cell Voronoi cluster without damping keeps its energy", 
     const VoronoiMesh mesh =
         generateVoronoiMesh(Domain::box({0.0, 0.0, 0.0}, {0.025, 0.025, 0.025}), 100, 2.5e-3, 17);
     DemParameters p = quietDynamicsParameters();
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;  // no breakage
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;  // no breakage
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel model(mesh, p);
     REQUIRE(model.cells().size() == 100);
     shake(model, 0.05, 20.0, 29);

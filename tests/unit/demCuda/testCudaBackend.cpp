@@ -12,6 +12,7 @@
 #include "boxMeshes.hpp"
 #include "dem/demModel.hpp"
 #include "demCuda/cudaDemModel.hpp"
+#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 
@@ -34,9 +35,11 @@ void shake(DemModel& model, double speed, double spin, unsigned seed)
 DemModel eventfulCluster(bool triangulated_floor = false)
 {
     DemParameters p;
-    p.bond_tensile_strength = 2e5;
-    p.bond_cohesion = 3e5;
-    p.fracture_energy_mode_I = p.fracture_energy_mode_II = 0.5;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = 2e5;
+    q.cohesion = 3e5;
+    q.fracture_energy_I = q.fracture_energy_II = 0.5;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
     DemModel model(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation, true,
@@ -69,7 +72,9 @@ TEST_CASE("an intact bonded block steps on the device as on the CPU, to round-of
 {
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel cpu(test::boxBlockMesh(6, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
     shake(cpu, 0.05, 20.0, 7);
     DemModel gpu_host(test::boxBlockMesh(6, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
@@ -154,7 +159,9 @@ TEST_CASE("on the device, a bonded cluster without damping or breakage conserves
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
     p.bond_damping = 0.0;
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel host(test::boxBlockMesh(5, 5, 4, {cell_size, cell_size, cell_size}, dilation), p);
     shake(host, 0.05, 20.0, 7);
     host.evaluateForces(0.0);
@@ -179,7 +186,9 @@ TEST_CASE("on the device, a time step far too large is reported, naming the step
     DemParameters p;
     p.gravity = {0.0, 0.0, 0.0};
     p.bond_damping = 0.0;
-    p.bond_tensile_strength = p.bond_cohesion = 1e12;
+    VoronoiQnscBondLaw::Parameters q;
+    q.tensile_strength = q.cohesion = 1e12;
+    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     DemModel host(test::boxBlockMesh(3, 3, 3, {cell_size, cell_size, cell_size}, dilation), p);
     shake(host, 0.05, 0.0, 3);
     CudaDemModel gpu(host);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/kstDfhMaterial.hpp"
 #include "fem/femModel.hpp"
 #include "femTestSupport.hpp"
 
@@ -64,8 +65,10 @@ TEST_CASE("KST-DFH element-steps per second under plate compression", "[.bench]"
             // The BDT granite tutorial's rock (m = 7, sigma_w = 21 MPa, V_ref = 2e-8 m^3), or
             // a weak one (sigma_w = 1 MPa, V_ref = 1e-9 m^3) whose elements crack in the
             // compression wave.
-            parameters.material.referenceVolume = weak ? 1e-9 : 2e-8;
-            if (weak) parameters.material.weibullStress = 1e6;
+            KstDfhParameters k;
+            k.referenceVolume = weak ? 1e-9 : 2e-8;
+            if (weak) k.weibullStress = 1e6;
+            parameters.material = std::make_shared<FemMaterialModelOf<KstDfhMaterial>>(k);
             parameters.massDamping = 2e4;
             FemModel model(mesh, parameters);
             RigidPlate bottom, top;

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "fem/linearElasticMaterial.hpp"
 #include "fem/femModel.hpp"
 #include "femTestSupport.hpp"
 
@@ -18,7 +19,7 @@ struct PressedBlock {
     explicit PressedBlock(const TetMesh& m, double crushingPressure) : mesh(m)
     {
         FemParameters p;
-        p.materialName = "linearElastic";
+        p.material = std::make_shared<FemMaterialModelOf<LinearElasticMaterial>>();
         p.massDamping = 2e5;
         p.contactCrushingPressure = crushingPressure;
         model = std::make_unique<FemModel>(mesh, p);
@@ -56,7 +57,7 @@ TEST_CASE("contact areas: the footprint of the faces that face the plate", "[fem
     const double lx = 0.02, ly = 0.01, lz = 0.005;
     const TetMesh mesh = test::boxMesh(gmshSession, lx, ly, lz, 0.003);
     FemParameters parameters;
-    parameters.materialName = "linearElastic";
+    parameters.material = std::make_shared<FemMaterialModelOf<LinearElasticMaterial>>();
     FemModel model(mesh, parameters);
     RigidPlate bottom, tilted;
     bottom.normal = {0, 0, 1};

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "fem/linearElasticMaterial.hpp"
+#include "fem/kstDfhMaterial.hpp"
 #include "core/counterRandom.hpp"
 #include "fem/femModel.hpp"
 #include "femTestSupport.hpp"
@@ -18,7 +20,7 @@ namespace {
 FemParameters elasticParameters()
 {
     FemParameters p;
-    p.materialName = "linearElastic";
+    p.material = std::make_shared<FemMaterialModelOf<LinearElasticMaterial>>();
     return p;
 }
 
@@ -65,7 +67,7 @@ TEST_CASE("patch test: a uniform strain imposed on the boundary is reproduced ex
     const double dt = model.stableTimeStep();
     for (int i = 0; i < 6000; ++i) REQUIRE(model.step(dt).ok);
 
-    const MaterialParameters& m = parameters.material;
+    const ElasticParameters& m = parameters.rock;
     const IsotropicElasticity elastic =
         IsotropicElasticity::fromYoungPoisson(m.youngsModulus, m.poissonRatio);
     const SymTensor expected = elastic.stress(symmetricPart(
@@ -132,7 +134,7 @@ TEST_CASE("stable time step of a single regular tet is the exact limit 2 / omega
     // It scales as h / c_p with the smallest height h = a sqrt(2/3) and c_p = sqrt((lambda+2mu)/rho);
     // for the regular tet 2/omega_max = 0.70 h / c_p (h / c_p alone would be unstable).
     const double pWaveSpeed =
-        std::sqrt(model.material().elasticity().pWaveModulus() / parameters.material.density);
+        std::sqrt(model.material().elasticity().pWaveModulus() / parameters.rock.density);
     const double heightStep = a * std::sqrt(2.0 / 3.0) / pWaveSpeed;
     CHECK(critical / heightStep == Approx(0.70).margin(0.01));
 
@@ -178,9 +180,11 @@ std::vector<double> crushBlock(int threads, int& cracks)
     const double size = 0.01;
     const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.2 * size);
     FemParameters parameters;
-    parameters.material.weibullStress = 2e6;
-    parameters.material.referenceVolume = 1e-9;
-    parameters.material.seed = 5;
+    KstDfhParameters k;
+    k.weibullStress = 2e6;
+    k.referenceVolume = 1e-9;
+    k.seed = 5;
+    parameters.material = std::make_shared<FemMaterialModelOf<KstDfhMaterial>>(k);
     parameters.massDamping = 1e4;
     FemModel model(mesh, parameters);
     RigidPlate bottom, top;

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "fem/linearElasticMaterial.hpp"
 #include "fem/femModel.hpp"
 #include "femTestSupport.hpp"
 
@@ -76,9 +77,9 @@ inline HertzResult runHertzSphere(const HertzSettings& settings)
         sphereOctantMesh(gmshSession, radius, settings.finestOverContactRadius * contactRadius,
                          1.5 * contactRadius, 0.2 * radius);
     FemParameters parameters;
-    parameters.materialName = "linearElastic";
+    parameters.material = std::make_shared<FemMaterialModelOf<LinearElasticMaterial>>();
     parameters.contactPenaltyScale = settings.penaltyScale;
-    parameters.material.density = 2540.0;
+    parameters.rock.density = 2540.0;
     const double pWaveSpeed = std::sqrt(77e9 * 0.79 / (1.21 * 0.58) / 2540.0);
     const double period = 4.0 * radius / pWaveSpeed;  // of the lowest compressive mode, roughly
     parameters.massDamping = 4.0 * M_PI / period;

@@ -1,6 +1,8 @@
 // KST-DFH at one material point: KST return, tensile cutoff, DFH cracking.
 #include <catch2/catch.hpp>
 
+#include "core/dictionary.hpp"
+#include "core/selector.hpp"
 #include "core/error.hpp"
 #include "fem/elementGeometry.hpp"
 #include "fem/kstDfhMaterial.hpp"
@@ -36,9 +38,9 @@ struct CrackBandElement {
                         stress = std::vector<double>(6, 0.0);
     long long lastResult = -1;  // computeElementForces' return of the last stretch
 
-    static MaterialParameters parameters()
+    static KstDfhParameters parameters()
     {
-        MaterialParameters p;
+        KstDfhParameters p;
         p.referenceVolume = 1e-9;
         p.fractureEnergy = fractureEnergy;
         p.kstA0 = 1e20;  // no plastic flow and no tensile cutoff in these tests
@@ -46,7 +48,7 @@ struct CrackBandElement {
         return p;
     }
     CrackBandElement(double edge, double strength)
-        : mesh(test::regularTet(edge)), geometry(makeElementGeometry(mesh)), material(parameters())
+        : mesh(test::regularTet(edge)), geometry(makeElementGeometry(mesh)), material(ElasticParameters{}, parameters())
     {
         material.initialise(geometry);
         KstDfhPointState state = material.pointState(0);
@@ -67,9 +69,9 @@ struct CrackBandElement {
 TEST_CASE("KST: a point driven past the surface returns to it at fixed pressure and stays on it",
           "[fem][kst]")
 {
-    MaterialParameters p;
+    KstDfhParameters p;
     p.damageEnabled = false;
-    const KstDfhMaterial material(p);
+    const KstDfhMaterial material(ElasticParameters{}, p);
     const KstDfhConstants& c = material.constants();
     KstDfhPointState state;
     const double bulk = c.elastic.bulkModulus();
@@ -97,9 +99,9 @@ TEST_CASE("KST: a point driven past the surface returns to it at fixed pressure 
 
 TEST_CASE("KST: hydrostatic tension beyond the cutoff returns to the apex", "[fem][kst]")
 {
-    MaterialParameters p;
+    KstDfhParameters p;
     p.damageEnabled = false;
-    const KstDfhMaterial material(p);
+    const KstDfhMaterial material(ElasticParameters{}, p);
     const KstDfhConstants& c = material.constants();
     // Default cutoff: upper root of 1e16 + 3.1e8 P + 2 P^2, about -46 MPa.
     CHECK(c.pressureCutoff == Approx((-3.1e8 + std::sqrt(3.1e8 * 3.1e8 - 8e16)) / 4.0));
@@ -113,11 +115,11 @@ TEST_CASE("KST: hydrostatic tension beyond the cutoff returns to the apex", "[fe
 TEST_CASE("DFH: uniaxial tension cracks at the first threshold; the crack carries compression only",
           "[fem][dfh]")
 {
-    MaterialParameters p;
+    KstDfhParameters p;
     p.referenceVolume = 1e-9;
-    const KstDfhMaterial material(p);
+    const KstDfhMaterial material(ElasticParameters{}, p);
     const KstDfhConstants& c = material.constants();
-    const double E = p.youngsModulus, nu = p.poissonRatio;
+    const double E = ElasticParameters{}.youngsModulus, nu = ElasticParameters{}.poissonRatio;
     KstDfhPointState state;
     state.failureStress[0] = 10e6, state.failureStress[1] = 20e6, state.failureStress[2] = 30e6;
     auto uniaxial = [nu](double e) { return SymTensor{e, -nu * e, -nu * e, 0, 0, 0}; };
@@ -151,10 +153,10 @@ TEST_CASE("DFH: uniaxial tension cracks at the first threshold; the crack carrie
 
 TEST_CASE("DFH: an open crack keeps only the retained fraction of its shear stiffness", "[fem][dfh]")
 {
-    MaterialParameters p;
+    KstDfhParameters p;
     p.referenceVolume = 1e-9;
     p.crackShearRetention = 0.1;
-    const KstDfhMaterial material(p);
+    const KstDfhMaterial material(ElasticParameters{}, p);
     const KstDfhConstants& c = material.constants();
     KstDfhPointState state;
     state.crackCount = 1;  // crack normal x (identity frame)
@@ -178,10 +180,10 @@ TEST_CASE("DFH erosion: an element leaves the model once its set number of direc
     const TetMesh mesh = test::regularTet(1e-2);
     const ElementGeometry geometry = makeElementGeometry(mesh);
     auto run = [&](int erodeAfterCracks, double stretch, std::vector<double>& stress) {
-        MaterialParameters p;
+        KstDfhParameters p;
         p.referenceVolume = 1e-9;
         p.erodeAfterCracks = erodeAfterCracks;
-        KstDfhMaterial material(p);
+        KstDfhMaterial material(ElasticParameters{}, p);
         material.initialise(geometry);
         KstDfhPointState state = material.pointState(0);
         state.failureStress[0] = 10e6, state.failureStress[1] = 20e6, state.failureStress[2] = 30e6;
@@ -189,7 +191,7 @@ TEST_CASE("DFH erosion: an element leaves the model once its set number of direc
         std::vector<double> u(12, 0.0), forces(12, 0.0);
         stress.assign(6, 0.0);
         long long bad = -1;
-        for (double strain : {2.0 * 10e6 / p.youngsModulus, stretch}) {
+        for (double strain : {2.0 * 10e6 / ElasticParameters{}.youngsModulus, stretch}) {
             for (int a = 0; a < 4; ++a) u[3 * a] = strain * mesh.nodes[a].x;  // u_x = eps x
             bad = material.computeElementForces(geometry, u.data(), stress.data(), forces.data());
         }
@@ -204,9 +206,9 @@ TEST_CASE("DFH erosion: an element leaves the model once its set number of direc
     CHECK(run(0, -2.0, stress) == 0);   // inverted (x -> -x): reported
     CHECK(run(1, -2.0, stress) == -1);  // eroded: no longer part of the model
     for (double component : stress) CHECK(component == 0.0);
-    MaterialParameters wrong;
+    KstDfhParameters wrong;
     wrong.erodeAfterCracks = 4;
-    CHECK_THROWS_WITH(KstDfhMaterial(wrong), Catch::Contains("erodeAfterCracks"));
+    CHECK_THROWS_WITH(KstDfhMaterial(ElasticParameters{}, wrong), Catch::Contains("erodeAfterCracks"));
 }
 
 TEST_CASE("crack band: the band width is the element's extent across the crack", "[fem][dfh]")
@@ -293,14 +295,16 @@ TEST_CASE("crack band: a softened crack unloads along its secant and closes in c
     CHECK(material.pointState(0).crackOpening[0] == Approx(kappa));  // no new damage on unloading
     // Compression: the crack is closed and the element has its full stiffness.
     CHECK(stressAt(-1e-4) == Approx(-M * 1e-4).epsilon(1e-9));
-    MaterialParameters wrong;
+    KstDfhParameters wrong;
     wrong.fractureEnergy = -1.0;
-    CHECK_THROWS_WITH(KstDfhMaterial(wrong), Catch::Contains("fractureEnergy"));
+    CHECK_THROWS_WITH(KstDfhMaterial(ElasticParameters{}, wrong), Catch::Contains("fractureEnergy"));
 }
 
 TEST_CASE("unknown material names list the known ones", "[fem]")
 {
-    CHECK_THROWS_WITH(makeFemMaterial("granite", MaterialParameters{}),
+    const Dictionary empty("kstDfh", "rockProperties");
+    CHECK_THROWS_WITH(femMaterials().make("granite", empty),
                       Catch::Contains("linearElastic") && Catch::Contains("kstDfh"));
-    CHECK(makeFemMaterial("kstDfh", MaterialParameters{})->typeName() == "kstDfh");
+    CHECK(femMaterials().make("linearElastic", empty)->make(ElasticParameters{})->typeName() == "linearElastic");
+    CHECK(defaultFemMaterial()->make(ElasticParameters{})->typeName() == "kstDfh");
 }

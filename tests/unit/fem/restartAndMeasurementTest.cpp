@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "fem/linearElasticMaterial.hpp"
+#include "fem/kstDfhMaterial.hpp"
 #include "core/error.hpp"
 #include "fem/measurements.hpp"
 #include "femCase/femCase.hpp"
@@ -22,8 +24,10 @@ FemParameters crushingParameters(double contactCrushingPressure = 0.0)
 {
     FemParameters parameters;
     parameters.contactCrushingPressure = contactCrushingPressure;
-    parameters.material.weibullStress = 2e6;
-    parameters.material.referenceVolume = 1e-9;
+    KstDfhParameters k;
+    k.weibullStress = 2e6;
+    k.referenceVolume = 1e-9;
+    parameters.material = std::make_shared<FemMaterialModelOf<KstDfhMaterial>>(k);
     parameters.massDamping = 1e4;
     return parameters;
 }
@@ -125,7 +129,7 @@ TEST_CASE("the virtual extensometer reads the strain along its axis times its le
     const double size = 0.02;
     const TetMesh mesh = test::boxMesh(gmshSession, size, size, size, 0.3 * size);
     FemParameters parameters;
-    parameters.materialName = "linearElastic";
+    parameters.material = std::make_shared<FemMaterialModelOf<LinearElasticMaterial>>();
     FemModel model(mesh, parameters);
     // u = G x with G_yy = -1e-3 and shear and rotation parts that do not stretch y.
     std::vector<double> u(3 * mesh.numNodes());

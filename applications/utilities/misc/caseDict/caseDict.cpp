@@ -6,10 +6,10 @@
 // Sample runs:
 //   caseDict -case tutorials/BDT/granite constant/rockProperties
 //   caseDict constant/rockProperties -keywords
-//   caseDict constant/rockProperties -entry bond/tensileStrength -value
-//   caseDict constant/rockProperties -entry bond/tensileStrength -set 28e6
-//   caseDict constant/rockProperties -entry bond/cohesion -add 5e6 -comment "from BDT series 3"
-//   caseDict constant/rockProperties -entry bond/cohesion -remove
+//   caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -value
+//   caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set 28e6
+//   caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment "from BDT series 3"
+//   caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove
 #include <iostream>
 
 #include "core/application.hpp"
@@ -29,12 +29,12 @@ const AppInfo info = {
     "[options] <dictionary file, relative to the case>",
     {"caseDict -case tutorials/BDT/granite constant/rockProperties",
      "caseDict constant/rockProperties -keywords",
-     "caseDict constant/rockProperties -entry bond/tensileStrength -value",
-     "caseDict constant/rockProperties -entry bond/tensileStrength -set 28e6",
-     "caseDict constant/rockProperties -entry bond/cohesion -add 5e6 -comment \"from BDT series 3\"",
-     "caseDict constant/rockProperties -entry bond/cohesion -remove"},
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -value",
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set 28e6",
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment \"from BDT series 3\"",
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove"},
     {
-        {"-entry", "key", "select an entry by its slash path, e.g. bond/tensileStrength"},
+        {"-entry", "key", "select an entry by its slash path, e.g. bond/voronoiQNSC/tensileStrength"},
         {"-value", "", "print only the value of the entry"},
         {"-keywords", "", "list the keywords of the dictionary, or of the sub-dictionary -entry"},
         {"-set", "value", "change the value of an existing entry"},

@@ -14,14 +14,15 @@
 
 #include "core/application.hpp"
 #include "core/error.hpp"
+#include "plot/gnuplot.hpp"
 #include "stats/distances.hpp"
 #include "stats/empiricalCdf.hpp"
-#include "stats/gnuplot.hpp"
 #include "stats/sampleSource.hpp"
 #include "stats/weibull.hpp"
 
 using namespace rockfrac;
 using namespace rockfrac::stats;
+using namespace rockfrac::plot;
 
 namespace {
 

@@ -14,11 +14,12 @@
 #include "core/application.hpp"
 #include "core/error.hpp"
 #include "io/timeSeries.hpp"
-#include "stats/gnuplot.hpp"
+#include "plot/gnuplot.hpp"
 #include "stats/measurements.hpp"
 
 using namespace rockfrac;
 using namespace rockfrac::stats;
+using namespace rockfrac::plot;
 namespace fs = std::filesystem;
 
 namespace {

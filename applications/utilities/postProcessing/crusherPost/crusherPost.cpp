@@ -16,7 +16,7 @@
 #include "core/dictionary.hpp"
 #include "fragments/psd.hpp"
 #include "io/timeSeries.hpp"
-#include "stats/gnuplot.hpp"
+#include "plot/gnuplot.hpp"
 
 using namespace rockfrac;
 namespace fs = std::filesystem;
@@ -55,13 +55,13 @@ void plotSeries(const fs::path& png, const std::string& title, const std::string
 {
     std::vector<std::vector<double>> rows;
     for (std::size_t i = 0; i < t.size(); ++i) rows.push_back({t[i], scale * y[i]});
-    std::string g = stats::gnuplotDataBlock("data", rows);
-    g += "set title " + stats::gnuplotString(title) + "\nset xlabel 'time [s]'\nset ylabel " +
-         stats::gnuplotString(ylabel) + "\nset grid\n";
+    std::string g = plot::gnuplotDataBlock("data", rows);
+    g += "set title " + plot::gnuplotString(title) + "\nset xlabel 'time [s]'\nset ylabel " +
+         plot::gnuplotString(ylabel) + "\nset grid\n";
     g += "set arrow from " + std::to_string(steadyStart) + ", graph 0 to " + std::to_string(steadyStart) +
          ", graph 1 nohead dt 2\n";
-    g += "plot $data using 1:2 with lines " + stats::seriesColour(0) + " title ''\n";
-    stats::renderPng(g, png);
+    g += "plot $data using 1:2 with lines " + plot::seriesColour(0) + " title ''\n";
+    plot::renderPng(g, png);
 }
 
 }  // namespace
@@ -155,13 +155,13 @@ int main(int argc, char** argv)
                     std::vector<std::vector<double>> rows;
                     for (std::size_t i = 0; i < curve.size.size(); ++i)
                         rows.push_back({1e3 * curve.size[i], 100 * curve.passing[i]});
-                    std::string g = stats::gnuplotDataBlock("psd", rows);
+                    std::string g = plot::gnuplotDataBlock("psd", rows);
                     g += "set title 'Discharge PSD'\nset xlabel 'sieve size [mm]'\nset ylabel 'passing [%]'\n"
                          "set logscale x\nset grid\nset arrow from " +
                          std::to_string(1e3 * css) + ", graph 0 to " + std::to_string(1e3 * css) +
                          ", graph 1 nohead dt 2\nplot $psd using 1:2 with linespoints " +
-                         stats::seriesColour(0) + " title ''\n";
-                    stats::renderPng(g, dir / "psd.png");
+                         plot::seriesColour(0) + " title ''\n";
+                    plot::renderPng(g, dir / "psd.png");
                 }
             } catch (const UserError& e) {
                 std::printf("Plots skipped: %s\n", e.what());

@@ -19,8 +19,8 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/subprocess.hpp"
 #include "members.hpp"
-#include "stats/subprocess.hpp"
 
 namespace rockfrac::runcases {
 
@@ -156,8 +156,8 @@ private:
         std::vector<std::string> environment = {"RUNCASES_MEMBER=" + member.id,
                                                 "RUNCASES_STUDY=" + fs::absolute(study_.directory).string()};
         if (!memberThreads_.empty()) environment.push_back("OMP_NUM_THREADS=" + memberThreads_);
-        const pid_t pid = stats::startProcess({"/bin/sh", "-c", study_.command}, directory,
-                                              directory / "log.runCases", environment);
+        const pid_t pid = startProcess({"/bin/sh", "-c", study_.command}, directory,
+                                       directory / "log.runCases", environment);
         running_[pid] = {&member, Clock::now()};
         std::cout << "started " << member.id << "  " << describeValues(study_, member) << std::endl;
     }
@@ -170,7 +170,7 @@ private:
             if (errno == EINTR) return;  // a stop signal: the loop decides
             throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
         }
-        finish(pid, stats::shellExitStatus(status), false);
+        finish(pid, shellExitStatus(status), false);
     }
 
     void finish(pid_t pid, int exitCode, bool stopping)
@@ -217,7 +217,7 @@ private:
             int status = 0;
             const pid_t pid = waitpid(-1, &status, WNOHANG);
             if (pid > 0) {
-                finish(pid, stats::shellExitStatus(status), true);
+                finish(pid, shellExitStatus(status), true);
                 continue;
             }
             if (pid < 0 && errno != EINTR) break;

@@ -142,9 +142,9 @@ std::vector<std::string> collectResults(const Study& study, const MemberDesign& 
     return values;
 }
 
-stats::TextTable ResultsTable::build(std::vector<std::string>& warnings)
+TextTable ResultsTable::build(std::vector<std::string>& warnings)
 {
-    stats::TextTable table;
+    TextTable table;
     table.names.push_back("member");
     for (const Parameter& p : study_.parameters) table.names.push_back(p.name), table.units.push_back(p.unit);
     table.units.insert(table.units.begin(), "-");
@@ -187,7 +187,7 @@ stats::TextTable ResultsTable::build(std::vector<std::string>& warnings)
 
 void ResultsTable::write(std::vector<std::string>& warnings)
 {
-    stats::writeTextTable(study_.resultsTable(), build(warnings));
+    writeTextTable(study_.resultsTable(), build(warnings));
 }
 
 }  // namespace rockfrac::runcases

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "stats/textTable.hpp"
+#include "io/textTable.hpp"
 #include "studyDefinition.hpp"
 
 namespace rockfrac::runcases {
@@ -51,7 +51,7 @@ public:
     explicit ResultsTable(const Study& study) : study_(study) {}
     // Forget a member's results (it is run again).
     void forget(const std::string& id) { collected_.erase(id); }
-    stats::TextTable build(std::vector<std::string>& warnings);
+    TextTable build(std::vector<std::string>& warnings);
     void write(std::vector<std::string>& warnings);
 
 private:

@@ -54,7 +54,7 @@ Parameter readParameter(const Entry& entry, const fs::path& templateCase)
     if (!entry.isDict())
         throw UserError(entry.keywordLocation.str() + ": parameter '" + entry.keyword +
                         "' must be a dictionary, e.g. '" + entry.keyword +
-                        " { file constant/rockProperties; entry bond/E; values (40e9 46e9); }'");
+                        " { file constant/rockProperties; entry bond/voronoiQNSC/E; values (40e9 46e9); }'");
     const Dictionary& dict = *entry.dict;
     Parameter parameter;
     parameter.name = entry.keyword;

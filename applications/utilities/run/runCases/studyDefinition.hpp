@@ -14,7 +14,7 @@ namespace rockfrac::runcases {
 // One entry of a template file that the study varies.
 struct EntryTarget {
     std::filesystem::path file;  // relative to the case, e.g. constant/rockProperties
-    std::string entry;           // slash path, e.g. bond/E
+    std::string entry;           // slash path, e.g. bond/voronoiQNSC/E
 };
 
 struct Parameter {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace rockfrac::stats {
+namespace rockfrac {
 
 // Start argv (argv[0] searched on PATH) in `workingDirectory`, stdin from
 // /dev/null, stdout and stderr appended to `logFile`. The child leads its own
@@ -31,4 +31,4 @@ int runProcess(const std::vector<std::string>& argv, const std::filesystem::path
 // An executable of that name on PATH (or the name itself when it holds a '/').
 std::optional<std::filesystem::path> findExecutable(const std::string& name);
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac

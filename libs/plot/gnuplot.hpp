@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace rockfrac::stats {
+namespace rockfrac::plot {
 
 // The gnuplot to run: $ROCKFRAC_GNUPLOT when set, else `gnuplot` on PATH.
 // UserError saying how to install it when there is none.
@@ -48,4 +48,4 @@ std::vector<std::string> splitCommaList(const std::string& text);
 void renderPng(const std::string& commands, const std::filesystem::path& png, int width = 1000,
                int height = 700);
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac::plot

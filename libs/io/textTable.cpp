@@ -1,4 +1,4 @@
-#include "stats/textTable.hpp"
+#include "io/textTable.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -7,7 +7,7 @@
 #include "core/atomicFile.hpp"
 #include "core/error.hpp"
 
-namespace rockfrac::stats {
+namespace rockfrac {
 
 namespace {
 
@@ -102,4 +102,4 @@ std::optional<double> parseNumber(const std::string& cell)
     return value;
 }
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac

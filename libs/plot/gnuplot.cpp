@@ -1,4 +1,4 @@
-#include "stats/gnuplot.hpp"
+#include "plot/gnuplot.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,9 +9,9 @@
 
 #include "core/atomicFile.hpp"
 #include "core/error.hpp"
-#include "stats/subprocess.hpp"
+#include "core/subprocess.hpp"
 
-namespace rockfrac::stats {
+namespace rockfrac::plot {
 
 namespace fs = std::filesystem;
 
@@ -151,4 +151,4 @@ void renderPng(const std::string& commands, const fs::path& png, int width, int 
     fs::rename(temporary, absolutePng);
 }
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac::plot

@@ -3,12 +3,12 @@
 #include <fstream>
 
 #include "core/error.hpp"
-#include "stats/textTable.hpp"
+#include "io/textTable.hpp"
 
-using namespace rockfrac::stats;
+using namespace rockfrac;
 namespace fs = std::filesystem;
 
-TEST_CASE("text table round trip, ragged rows refused", "[stats]")
+TEST_CASE("text table round trip, ragged rows refused", "[io]")
 {
     const fs::path dir = fs::path(ROCKFRAC_BINARY_DIR) / "tests/stats-tmp/table";
     fs::remove_all(dir);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace rockfrac::stats {
+namespace rockfrac {
 
 struct TextTable {
     std::vector<std::string> names;  // column names without units
@@ -27,4 +27,4 @@ void writeTextTable(const std::filesystem::path& file, const TextTable& table);
 // A cell as a number, when it is one.
 std::optional<double> parseNumber(const std::string& cell);
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac

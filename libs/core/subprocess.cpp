@@ -1,4 +1,4 @@
-#include "stats/subprocess.hpp"
+#include "core/subprocess.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 
-namespace rockfrac::stats {
+namespace rockfrac {
 
 namespace fs = std::filesystem;
 
@@ -95,4 +95,4 @@ std::optional<fs::path> findExecutable(const std::string& name)
     return std::nullopt;
 }
 
-}  // namespace rockfrac::stats
+}  // namespace rockfrac
