@@ -1,9 +1,7 @@
 #include "core/timeControl.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 
@@ -124,14 +122,24 @@ fs::path TimeControl::prepareStagingDir(double time) const
     std::error_code ec;
     fs::remove_all(staging, ec);
     if (!ec) fs::create_directories(staging, ec);
-    if (ec) {
-        const auto times = timeDirectories(case_);
+    if (ec)
         throw UserError("cannot write time directory " + (case_ / timeName(time)).string() + " (" +
                         ec.message() +
                         "); check the free space and permissions of the case; the last complete time is " +
-                        (times.empty() ? std::string("none") : timeName(times.back())));
-    }
+                        latestTimeName());
     return staging;
+}
+
+std::string TimeControl::latestTimeName() const
+{
+    const auto times = timeDirectories(case_);
+    return times.empty() ? std::string("none") : timeName(times.back());
+}
+
+void TimeControl::writeTimeDir(double time, const std::function<void(const fs::path&)>& fill)
+{
+    fill(prepareStagingDir(time));
+    commitTimeDir(time);
 }
 
 void TimeControl::commitTimeDir(double time)
@@ -163,32 +171,6 @@ void TimeControl::commitTimeDir(double time)
             written_.erase(written_.begin());
         }
     }
-}
-
-// ---- interruption -------------------------------------------------------------
-
-namespace {
-std::atomic<int> receivedSignal{0};
-extern "C" void onSignal(int signal)
-{
-    receivedSignal.store(signal);
-}
-}  // namespace
-
-void installInterruptHandlers()
-{
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
-}
-
-bool interrupted()
-{
-    return receivedSignal.load() != 0;
-}
-
-int interruptExitCode()
-{
-    return 128 + receivedSignal.load();
 }
 
 }  // namespace rockfrac

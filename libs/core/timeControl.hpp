@@ -8,8 +8,11 @@
 // Time directories are written atomically: the solver fills "<case>/.tmp.<time>"
 // and TimeControl renames it to "<case>/<time>" when complete, so a run killed
 // at any moment leaves every time directory either complete or absent.
+//
+// The solvers' time loop (write rules, signals, progress) is TimeLoop (timeLoop.hpp).
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,10 @@ public:
     // Publish a filled staging dir as "<case>/<time>" (replacing an old one) and
     // purge old time directories when purgeWrite > 0.
     void commitTimeDir(double time);
+    // The three together: `fill` writes the state's files into the staging dir it is given.
+    void writeTimeDir(double time, const std::function<void(const std::filesystem::path&)>& fill);
+    // Name of the newest complete time directory of the case, "none" without one.
+    std::string latestTimeName() const;
 
     // Numeric time directories of a case, ascending (".tmp.*" and "0" excluded when empty).
     static std::vector<double> timeDirectories(const std::filesystem::path& caseDir);
@@ -63,11 +70,5 @@ private:
     std::chrono::steady_clock::time_point lastClockWrite_;
     std::vector<double> written_;
 };
-
-// SIGINT / SIGTERM: the solver checks interrupted() every step, writes its
-// state at the current step and exits with interruptExitCode() (130 / 143).
-void installInterruptHandlers();
-bool interrupted();
-int interruptExitCode();
 
 }  // namespace rockfrac

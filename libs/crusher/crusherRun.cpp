@@ -6,11 +6,10 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
-#include "core/progress.hpp"
-#include "core/timeControl.hpp"
 #include "crusher/destructor.hpp"
 #include "crusher/feedRock.hpp"
 #include "crusher/machineLoading.hpp"
+#include "demCase/demBackend.hpp"
 #include "demCase/demCase.hpp"
 #include "demCuda/cudaDemModel.hpp"
 #include "geometry/triSurface.hpp"
@@ -87,12 +86,28 @@ RevolvedLiner addLiner(DemModel& model, const fs::path& stl, const WallMotion& m
     return revolvedLiner(surface, wall, facing, stl.string());
 }
 
-}  // namespace
+// The crusher's run: reads and checks every input in its constructor (UserError before
+// any step); TimeLoop drives it.
+class CrusherRun final : public TimedRun {
+public:
+    CrusherRun(const Application& a, TimeLoop& loop);
+    void printSetup() const override;
+    // Cells are inserted and removed: no state file to continue from.
+    bool canRestart() const override { return false; }
+    long start(bool restarted) override;
+    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::windowMeans}; }
+    void beforeStep(long step) override;
+    StepResult advance(double deltaT) override;
+    void afterStep(long step) override;
+    void sample() override { machineSeries->append(machineRow()); }
+    void writeTime(long step) override { writeVtk(step); }
+    std::string writeFailure(long step) override;
+    double time() const override { return model->time(); }
+    std::string progress() const override;
+    void report(bool interrupted) override;
 
-struct CrusherRun::Impl {
+private:
     const Application& app;
-    Dictionary controlDict;
-    TimeControl time;
     DemParameters parameters;
     MachineLoading loading;
     std::unique_ptr<FeedFactory> factory;
@@ -101,14 +116,14 @@ struct CrusherRun::Impl {
     // owner of the state and is synchronised around what changes it on the host (feed,
     // destructor, output), as in bondedDemFoam.
     bool useCuda = false;
-    std::unique_ptr<CudaDemModel> device;
+    std::unique_ptr<DemBackend> backend;  // made by start()
+    std::unique_ptr<TimeSeriesWriter> machineSeries, dischargeSeries;
     CellShapes shapes;
     int mantle = -1, concave = -1, choke = -1;
     bool chokeLowered = false;
-    long sampleInterval = 100;
+    long sampleInterval = 100;  // steps between machine.dat rows (functions/machine/writeInterval)
     double rayleighStep = 0.0;
     CriticalTimeStep critical;
-    long step = 0;
 
     // Bookkeeping.
     double massDischarged = 0.0, mantleWork = 0.0;
@@ -120,220 +135,223 @@ struct CrusherRun::Impl {
     MantlePose pose;                    // of the mantle during the current step
     double lastPower = 0.0;             // the drive's power in the last step [W]
     long sampleSteps = 0;
+    // The solver's throughput: cells times steps (substeps too) over the wall time.
+    std::chrono::steady_clock::time_point wallStart;
+    double cellSteps = 0.0;
 
-    explicit Impl(const Application& a)
-        : app(a),
-          controlDict(Dictionary::readFile(a.path("system/controlDict"))),
-          time(controlDict, a.casePath())
-    {
-        useCuda = readCudaBackend(controlDict);
-        parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
-        loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
-        spin = MantleSpin(loading.spin);
-        parameters.gravity = loading.gravity;
-        if (time.restarting())
-            throw UserError(controlDict.fileName() +
-                            ": a crusher run cannot restart yet (cells are inserted and removed); set "
-                            "startFrom startTime; startTime 0; and remove the time directories");
-        const VoronoiMesh rockMesh = readVoronoiMesh(loading.feed.rock_case);
-        factory = std::make_unique<FeedFactory>(loading.feed,
-                                                makeFeedRockTemplate(rockMesh, parameters.rock_density));
-        model = std::make_unique<DemModel>(parameters);
-        const MantlePose start = mantlePose(loading.machine.kinematics, 0.0);
-        std::vector<RevolvedLiner> liners;
-        liners.push_back(
-            addLiner(*model, loading.machine.mantle_stl, wallMotion(start), SurfaceFacing::awayFromAxis));
-        liners.push_back(
-            addLiner(*model, loading.machine.concave_stl, WallMotion{}, SurfaceFacing::towardsAxis));
-        mantle = liners[0].wall;
-        concave = liners[1].wall;
-        factory->setLiners(std::move(liners));
-        if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
-        chooseTimeStep();
-        // Steps too long for a cell pressed into many contact points are split (DemModel::step).
-        model->setStepLimit(time.deltaT() / critical.value, critical.bond_frequency,
-                            critical.bond_damping_ratio);
-        if (controlDict.found("functions") && controlDict.subDict("functions").found("machine"))
-            sampleInterval = controlDict.subDict("functions")
-                                 .subDict("machine")
-                                 .getOrDefault<long>("writeInterval", sampleInterval);
-        if (sampleInterval < 1)
-            throw UserError(controlDict.fileName() + ": functions/machine/writeInterval must be >= 1");
-    }
-
-    // The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
-    void chooseTimeStep()
-    {
-        const DemModel probe(factory->smallestRock(), parameters);
-        rayleighStep = probe.rayleighTimeStep();
-        critical = probe.criticalTimeStep();
-        const int given = int(time.deltaTGiven()) + int(controlDict.found("rayleighFraction")) +
-                          int(controlDict.found("criticalFraction"));
-        if (given != 1)
-            throw UserError(controlDict.fileName() +
-                            ": give exactly one of 'deltaT' [s], 'rayleighFraction' or 'criticalFraction'");
-        if (controlDict.found("rayleighFraction"))
-            time.setDeltaT(controlDict.getScalar("rayleighFraction", Bounds::open(0, 1)) * rayleighStep);
-        if (controlDict.found("criticalFraction"))
-            time.setDeltaT(controlDict.getScalar("criticalFraction", Bounds::closed(1e-9, 1)) *
-                           critical.value);
-        if (time.deltaT() > critical.value)
-            throw UserError(controlDict.fileName() + ": the time step " + std::to_string(time.deltaT()) +
-                            " s is above the largest stable step " + std::to_string(critical.value) +
-                            " s of the smallest feed rock; reduce deltaT or use criticalFraction");
-    }
-
-    double massInside() const
-    {
-        double m = 0.0;
-        for (double c : model->cells().mass) m += c;
-        return m;
-    }
-
-    // Machine state before a step: mantle pose, choke plane, feed.
-    void prepareStep()
-    {
-        const double t = model->time();
-        pose = mantlePose(loading.machine.kinematics, t, spin.angle(), spin.rate());
-        model->setWallMotion(mantle, wallMotion(pose));
-        if (choke >= 0 && !chokeLowered && t >= loading.choke.duration) {
-            WallState w = model->wall(choke);
-            w.origin.z = loading.destructor.below - 1e3;  // lowered far below everything
-            model->setWallState(choke, w);
-            chokeLowered = true;
-        }
-        const long feedEvery = std::max(1L, std::lround(loading.feed.interval / time.deltaT()));
-        if (step % feedEvery == 0) {
-            synchronise();  // the factory looks for free space among the current cells
-            const std::vector<InsertedRock> rocks = factory->feed(*model, t);
-            for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, *model);
-            if (!rocks.empty() && device) device->upload();
-        }
-    }
-
-    // Cells are inserted and removed on the host (DemModel::insertCells/removeCells, the
-    // same code for both backends); with the CUDA backend the device state comes down
-    // before and goes up after, at feed and destructor steps only.
-    void synchronise()
-    {
-        if (device) device->downloadState();
-    }
-
-    void advance()
-    {
-        if (device)
-            device->step(time.deltaT());
-        else
-            model->step(time.deltaT());
-    }
-
-    void afterStep(TimeSeriesWriter& discharge)
-    {
-        // The model books the mantle's work half a step at a time with the forces of each
-        // half kick (the mantle moves every step, so the forces are re-evaluated before it).
-        mantleWork = model->wallWork(mantle);
-        const Vec3 force = model->wallReaction(mantle);
-        const Vec3 origin = model->wall(mantle).origin;
-        const Vec3 torque =
-            model->wallReactionTorque(mantle) + cross(origin - loading.machine.kinematics.pivot, force);
-        // The drive delivers the gyration's power: what the wall gives the rocks plus what
-        // the rocks' torque takes from the spin (mantleSpin.hpp); with spin fixed the rate is 0.
-        const double axialTorque = dot(pose.rotation * Vec3{0.0, 0.0, 1.0}, torque);
-        const double power = model->wallPower(mantle) + spin.rate() * axialTorque;
-        lastPower = power;
-        spin.advance(axialTorque, time.deltaT());
-        sumForce += force;
-        sumTorque += torque;
-        sumPower += power;
-        ++sampleSteps;
-        if (step % loading.destructor.interval != 0) return;
-        synchronise();
-        const DestructorResult r = destroyBelow(*model, loading.destructor.below);
-        if (r.fragments.empty()) return;
-        if (device) device->upload();
-        compactShapes(shapes, r.new_index);
-        massDischarged += r.mass;
-        fragmentsDischarged += static_cast<int>(r.fragments.size());
-        for (const DischargedFragment& f : r.fragments)
-            discharge.append(
-                {f.time, double(f.n_cells), f.mass, f.volume, f.equivalent_diameter, f.sieve_size});
-    }
-
-    static std::vector<Column> machineColumns()
-    {
-        return {{"Time", "s"},        {"forceX", "N"},       {"forceY", "N"},          {"forceZ", "N"},
-                {"torqueX", "N m"},   {"torqueY", "N m"},    {"torqueZ", "N m"},       {"power", "W"},
-                {"massInside", "kg"}, {"massFed", "kg"},     {"massDischarged", "kg"}, {"cells", "-"},
-                {"rocksFed", "-"},    {"fragmentsOut", "-"}, {"brokenBonds", "-"},     {"mantleWork", "J"},
-                {"kinetic", "J"},     {"stored", "J"},       {"dissipated", "J"},      {"fracture", "J"},
-                {"exchanged", "J"},   {"gravityWork", "J"},  {"balanceError", "J"},    {"spinRate", "rad/s"},
-                {"spinEnergy", "J"},  {"bearingLoss", "J"},  {"driveWork", "J"}};
-    }
-
-    std::vector<double> machineRow()
-    {
-        const double n = std::max<long>(1, sampleSteps);
-        const DemEnergies& e = model->energies();
-        std::vector<double> row{model->time(),
-                                sumForce.x / n,
-                                sumForce.y / n,
-                                sumForce.z / n,
-                                sumTorque.x / n,
-                                sumTorque.y / n,
-                                sumTorque.z / n,
-                                sumPower / n,
-                                massInside(),
-                                factory->massFed(),
-                                massDischarged,
-                                double(model->cells().size()),
-                                double(factory->rocksFed()),
-                                double(fragmentsDischarged),
-                                double(model->counters().bonds_broken),
-                                mantleWork,
-                                e.kinetic(),
-                                e.stored(),
-                                e.dissipated(),
-                                e.fracture,
-                                e.exchanged,
-                                e.gravity_work,
-                                e.balance() - model->initialBalance(),
-                                spin.rate(),
-                                spin.kineticEnergy(),
-                                spin.bearingDissipated(),
-                                mantleWork + spin.torqueWork()};
-        sumForce = sumTorque = Vec3{};
-        sumPower = 0.0;
-        sampleSteps = 0;
-        return row;
-    }
-
-    void writeVtk()
-    {
-        if (model->cells().size() == 0) return;
-        synchronise();
-        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
-    }
-
-    std::string progressExtras() const
-    {
-        char buffer[200];
-        // cut: contacts whose cores intersect in this step (pressed deeper than the shells,
-        // docs/theory-dem.md §6), cell–cell pairs + cells on the liners; more than a few means
-        // the rocks are jammed.
-        const DemCounters& counters = model->counters();
-        std::snprintf(buffer, sizeof(buffer),
-                      "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d  split %ld",
-                      model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
-                      counters.bonds_broken, counters.pair_core_intersections,
-                      counters.core_intersections - counters.pair_core_intersections, counters.split_steps);
-        return buffer;
-    }
+    double massInside() const;
+    static std::vector<Column> machineColumns();
+    std::vector<double> machineRow();
+    void writeVtk(long step);
 };
 
-CrusherRun::CrusherRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
-CrusherRun::~CrusherRun() = default;
+CrusherRun::CrusherRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
+{
+    useCuda = readCudaBackend(controlDict);
+    parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
+    loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
+    spin = MantleSpin(loading.spin);
+    parameters.gravity = loading.gravity;
+    const VoronoiMesh rockMesh = readVoronoiMesh(loading.feed.rock_case);
+    factory =
+        std::make_unique<FeedFactory>(loading.feed, makeFeedRockTemplate(rockMesh, parameters.rock_density));
+    model = std::make_unique<DemModel>(parameters);
+    const MantlePose start = mantlePose(loading.machine.kinematics, 0.0);
+    std::vector<RevolvedLiner> liners;
+    liners.push_back(
+        addLiner(*model, loading.machine.mantle_stl, wallMotion(start), SurfaceFacing::awayFromAxis));
+    liners.push_back(addLiner(*model, loading.machine.concave_stl, WallMotion{}, SurfaceFacing::towardsAxis));
+    mantle = liners[0].wall;
+    concave = liners[1].wall;
+    factory->setLiners(std::move(liners));
+    if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
+    // The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
+    const DemModel probe(factory->smallestRock(), parameters);
+    rayleighStep = probe.rayleighTimeStep();
+    critical = probe.criticalTimeStep();
+    chooseDemTimeStep(controlDict, runTime, rayleighStep, critical, "the smallest feed rock");
+    // Steps too long for a cell pressed into many contact points are split (DemModel::step).
+    model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,
+                        critical.bond_damping_ratio);
+    sampleInterval = readSampleInterval(controlDict, "machine", sampleInterval);
+}
 
-namespace {
+double CrusherRun::massInside() const
+{
+    double m = 0.0;
+    for (double c : model->cells().mass) m += c;
+    return m;
+}
+
+std::vector<Column> CrusherRun::machineColumns()
+{
+    return {{"Time", "s"},        {"forceX", "N"},       {"forceY", "N"},          {"forceZ", "N"},
+            {"torqueX", "N m"},   {"torqueY", "N m"},    {"torqueZ", "N m"},       {"power", "W"},
+            {"massInside", "kg"}, {"massFed", "kg"},     {"massDischarged", "kg"}, {"cells", "-"},
+            {"rocksFed", "-"},    {"fragmentsOut", "-"}, {"brokenBonds", "-"},     {"mantleWork", "J"},
+            {"kinetic", "J"},     {"stored", "J"},       {"dissipated", "J"},      {"fracture", "J"},
+            {"exchanged", "J"},   {"gravityWork", "J"},  {"balanceError", "J"},    {"spinRate", "rad/s"},
+            {"spinEnergy", "J"},  {"bearingLoss", "J"},  {"driveWork", "J"}};
+}
+
+// The means since the last row (an empty window counts as one step).
+std::vector<double> CrusherRun::machineRow()
+{
+    const double n = std::max<long>(1, sampleSteps);
+    const DemEnergies& e = model->energies();
+    std::vector<double> row{model->time(),
+                            sumForce.x / n,
+                            sumForce.y / n,
+                            sumForce.z / n,
+                            sumTorque.x / n,
+                            sumTorque.y / n,
+                            sumTorque.z / n,
+                            sumPower / n,
+                            massInside(),
+                            factory->massFed(),
+                            massDischarged,
+                            double(model->cells().size()),
+                            double(factory->rocksFed()),
+                            double(fragmentsDischarged),
+                            double(model->counters().bonds_broken),
+                            mantleWork,
+                            e.kinetic(),
+                            e.stored(),
+                            e.dissipated(),
+                            e.fracture,
+                            e.exchanged,
+                            e.gravity_work,
+                            e.balance() - model->initialBalance(),
+                            spin.rate(),
+                            spin.kineticEnergy(),
+                            spin.bearingDissipated(),
+                            mantleWork + spin.torqueWork()};
+    sumForce = sumTorque = Vec3{};
+    sumPower = 0.0;
+    sampleSteps = 0;
+    return row;
+}
+
+void CrusherRun::writeVtk(long step)
+{
+    if (model->cells().size() == 0) return;
+    backend->download();
+    writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
+}
+
+// ---- the loop's hooks (core/timeLoop.hpp) ----------------------------------------
+
+long CrusherRun::start(bool)
+{
+    backend = std::make_unique<DemBackend>(*model, useCuda);
+    if (useCuda) {
+        std::printf("Backend: %s, %s (cells are fed and discharged on the host)\n",
+                    cudaBackendSummary().c_str(), cudaBackendInfo().status.c_str());
+    } else {
+        std::printf("Backend: cpu (OpenMP)\n");
+    }
+    machineSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "machine", machineColumns());
+    dischargeSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "discharge",
+                                                         std::vector<Column>{{"Time", "s"},
+                                                                             {"cells", "-"},
+                                                                             {"mass", "kg"},
+                                                                             {"volume", "m^3"},
+                                                                             {"equivalentDiameter", "m"},
+                                                                             {"sieveSize", "m"}});
+    wallStart = std::chrono::steady_clock::now();
+    return 0;
+}
+
+// Machine state before a step: mantle pose, choke plane, feed; at step 0 also the forces
+// of the initial state for its machine.dat row.
+void CrusherRun::beforeStep(long step)
+{
+    const double t = model->time();
+    pose = mantlePose(loading.machine.kinematics, t, spin.angle(), spin.rate());
+    model->setWallMotion(mantle, wallMotion(pose));
+    if (choke >= 0 && !chokeLowered && t >= loading.choke.duration) {
+        WallState w = model->wall(choke);
+        w.origin.z = loading.destructor.below - 1e3;  // lowered far below everything
+        model->setWallState(choke, w);
+        chokeLowered = true;
+    }
+    const long feedEvery = std::max(1L, std::lround(loading.feed.interval / runTime.deltaT()));
+    if (step % feedEvery == 0) {
+        // Cells are inserted on the host (DemModel::insertCells, the same code for both
+        // backends): the device state comes down before and goes up after.
+        backend->download();  // the factory looks for free space among the current cells
+        const std::vector<InsertedRock> rocks = factory->feed(*model, t);
+        for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, *model);
+        if (!rocks.empty()) backend->upload();
+    }
+    if (step == 0) backend->evaluateForces(runTime.deltaT());
+}
+
+StepResult CrusherRun::advance(double deltaT)
+{
+    const long stepsBefore = model->counters().steps;
+    const double cellsBefore = model->cells().size();
+    backend->step(deltaT);
+    cellSteps += cellsBefore * double(model->counters().steps - stepsBefore);  // substeps too
+    const DemStatus& status = model->status();
+    if (status.ok()) return {};
+    return {false, status.message()};
+}
+
+void CrusherRun::afterStep(long step)
+{
+    // The model books the mantle's work half a step at a time with the forces of each
+    // half kick (the mantle moves every step, so the forces are re-evaluated before it).
+    mantleWork = model->wallWork(mantle);
+    const Vec3 force = model->wallReaction(mantle);
+    const Vec3 origin = model->wall(mantle).origin;
+    const Vec3 torque =
+        model->wallReactionTorque(mantle) + cross(origin - loading.machine.kinematics.pivot, force);
+    // The drive delivers the gyration's power: what the wall gives the rocks plus what
+    // the rocks' torque takes from the spin (mantleSpin.hpp); with spin fixed the rate is 0.
+    const double axialTorque = dot(pose.rotation * Vec3{0.0, 0.0, 1.0}, torque);
+    const double power = model->wallPower(mantle) + spin.rate() * axialTorque;
+    lastPower = power;
+    spin.advance(axialTorque, runTime.deltaT());
+    sumForce += force;
+    sumTorque += torque;
+    sumPower += power;
+    ++sampleSteps;
+    if (step % loading.destructor.interval != 0) return;
+    backend->download();  // cells are removed on the host, as they are fed
+    const DestructorResult r = destroyBelow(*model, loading.destructor.below);
+    if (r.fragments.empty()) return;
+    backend->upload();
+    compactShapes(shapes, r.new_index);
+    massDischarged += r.mass;
+    fragmentsDischarged += static_cast<int>(r.fragments.size());
+    for (const DischargedFragment& f : r.fragments)
+        dischargeSeries->append(
+            {f.time, double(f.n_cells), f.mass, f.volume, f.equivalent_diameter, f.sieve_size});
+}
+
+std::string CrusherRun::writeFailure(long step)
+{
+    if (model->cells().size() == 0) return {};
+    writeVtk(step);
+    return "VTK/cells_" + std::to_string(step) + ".vtu";
+}
+
+std::string CrusherRun::progress() const
+{
+    char buffer[200];
+    // cut: contacts whose cores intersect in this step (pressed deeper than the shells,
+    // docs/theory-dem.md §6), cell–cell pairs + cells on the liners; more than a few means
+    // the rocks are jammed.
+    const DemCounters& counters = model->counters();
+    std::snprintf(buffer, sizeof(buffer),
+                  "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d  split %ld",
+                  model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
+                  counters.bonds_broken, counters.pair_core_intersections,
+                  counters.core_intersections - counters.pair_core_intersections, counters.split_steps);
+    return buffer;
+}
+
 std::string spinText(const MantleSpinSpec& s)
 {
     if (!s.free) return "spin fixed";
@@ -343,114 +361,61 @@ std::string spinText(const MantleSpinSpec& s)
                   s.bearing_damping);
     return buffer;
 }
-}  // namespace
 
 void CrusherRun::printSetup() const
 {
-    const Impl& r = *impl_;
-    const FeedRockTemplate& rock = r.factory->rock();
-    const FeedSpec& f = r.loading.feed;
-    const MachineSpec& m = r.loading.machine;
+    const FeedRockTemplate& rock = factory->rock();
+    const FeedSpec& f = loading.feed;
+    const MachineSpec& m = loading.machine;
     std::printf(
         "Machine: mantle gyrating about (%g %g %g) m, eccentric angle %.4f deg, %.4g rpm, %s; "
         "CSS %.1f mm, discharge at z = %.4g m\n",
         m.kinematics.pivot.x, m.kinematics.pivot.y, m.kinematics.pivot.z,
         180.0 / 3.14159265358979323846 * m.kinematics.eccentric_angle,
-        m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), spinText(r.loading.spin).c_str(),
+        m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), spinText(loading.spin).c_str(),
         1e3 * m.closed_side_setting, m.discharge_level);
     std::printf(
         "Feed rock %s: %d cells, %d bonds, sieve size %.4g mm, volume-equivalent diameter %.4g mm; "
         "sizes %.4g-%.4g mm at %.4g kg/s (at most %.4g kg)\n",
         f.rock_case.string().c_str(), rock.mesh.nCells(), rock.mesh.nBonds(), 1e3 * rock.sieve_size,
         1e3 * rock.equivalent_diameter, 1e3 * f.size_min, 1e3 * f.size_max, f.mass_rate, f.total_mass);
-    if (r.loading.choke.enabled)
-        std::printf("Choke plane at z = %.4g m until t = %.4g s\n", r.loading.choke.level,
-                    r.loading.choke.duration);
-    std::printf("Destructor below z = %.4g m, checked every %ld steps\n", r.loading.destructor.below,
-                r.loading.destructor.interval);
+    if (loading.choke.enabled)
+        std::printf("Choke plane at z = %.4g m until t = %.4g s\n", loading.choke.level,
+                    loading.choke.duration);
+    std::printf("Destructor below z = %.4g m, checked every %ld steps\n", loading.destructor.below,
+                loading.destructor.interval);
     std::printf(
         "Time step %.4g s = %.3g x stable step %.4g s of the smallest rock (Rayleigh %.4g s); end time "
         "%.4g s (%ld steps)\n",
-        r.time.deltaT(), r.time.deltaT() / r.critical.value, r.critical.value, r.rayleighStep,
-        r.time.endTime(), r.time.endStep());
+        runTime.deltaT(), runTime.deltaT() / critical.value, critical.value, rayleighStep, runTime.endTime(),
+        runTime.endStep());
 }
 
-int CrusherRun::execute()
+void CrusherRun::report(bool)
 {
-    Impl& r = *impl_;
-    if (r.app.dryRun()) {
-        std::printf("Dry run: every input is valid; nothing run, nothing written.\n");
-        return exitSuccess;
-    }
-    installInterruptHandlers();
-    if (r.useCuda) {
-        r.device = std::make_unique<CudaDemModel>(*r.model);
-        std::printf("Backend: %s, %s (cells are fed and discharged on the host)\n",
-                    cudaBackendSummary().c_str(), cudaBackendInfo().status.c_str());
-    } else {
-        std::printf("Backend: cpu (OpenMP)\n");
-    }
-    TimeSeriesWriter machine(r.app.casePath(), "machine", Impl::machineColumns());
-    TimeSeriesWriter discharge(r.app.casePath(), "discharge",
-                               {{"Time", "s"},
-                                {"cells", "-"},
-                                {"mass", "kg"},
-                                {"volume", "m^3"},
-                                {"equivalentDiameter", "m"},
-                                {"sieveSize", "m"}});
-    ProgressReporter progress(0.0, r.time.endTime());
-    const long endStep = r.time.endStep();
-    std::string reason = "end time reached";
-    int exitCode = exitSuccess;
-    const auto wallStart = std::chrono::steady_clock::now();
-    double cellSteps = 0.0;
-    while (r.step < endStep) {
-        r.prepareStep();
-        if (r.step == 0) {
-            if (r.device)
-                r.device->evaluateForces(r.time.deltaT());
-            else
-                r.model->evaluateForces(r.time.deltaT());
-            machine.append(r.machineRow());
-            r.writeVtk();
-        }
-        const long stepsBefore = r.model->counters().steps;
-        const double cellsBefore = r.model->cells().size();
-        r.advance();
-        cellSteps += cellsBefore * double(r.model->counters().steps - stepsBefore);  // substeps too
-        ++r.step;
-        const DemStatus& status = r.model->status();
-        if (!status.ok()) throw UserError("step " + std::to_string(r.step) + ": " + status.message());
-        r.afterStep(discharge);
-        if (r.step % r.sampleInterval == 0) machine.append(r.machineRow());
-        if (interrupted()) {
-            reason = "interrupted by a signal (a crusher run cannot restart yet)";
-            exitCode = interruptExitCode();
-        }
-        if (r.time.writeDue(r.step) || exitCode != exitSuccess || r.step == endStep) r.writeVtk();
-        if (exitCode != exitSuccess) break;
-        progress.update(r.step, r.model->time(), [&] { return r.progressExtras(); });
-    }
-    if (r.sampleSteps > 0) machine.append(r.machineRow());
-    progress.finish(r.step, r.model->time(), reason);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    const double inside = r.massInside(), fed = r.factory->massFed();
+    const double inside = massInside(), fed = factory->massFed();
     std::printf(
         "Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg); %d rocks fed, %d "
         "fragments discharged\n",
-        fed, inside, r.massDischarged, fed - inside - r.massDischarged, r.factory->rocksFed(),
-        r.fragmentsDischarged);
-    const DemEnergies& e = r.model->energies();
+        fed, inside, massDischarged, fed - inside - massDischarged, factory->rocksFed(), fragmentsDischarged);
+    const DemEnergies& e = model->energies();
     std::printf(
         "Energy: mantle work %.5g J, gravity work %.5g J = kinetic %.5g + stored %.5g + dissipated %.5g "
         "(fracture %.5g) + carried out %.5g J; balance error %.3g J\n",
-        r.mantleWork, e.gravity_work, e.kinetic(), e.stored(), e.dissipated(), e.fracture, e.exchanged,
-        e.balance() - r.model->initialBalance());
-    std::printf("%s\n", stepCheckSummary(r.model->counters()).c_str());
+        mantleWork, e.gravity_work, e.kinetic(), e.stored(), e.dissipated(), e.fracture, e.exchanged,
+        e.balance() - model->initialBalance());
+    std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
     std::printf("Throughput of the solver: %.4g cell-steps/s (%.4g cell-steps in %.4g s wall)\n",
                 cellSteps / std::max(seconds, 1e-9), cellSteps, seconds);
-    return exitCode;
+}
+
+}  // namespace
+
+std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop)
+{
+    return std::make_unique<CrusherRun>(app, loop);
 }
 
 }  // namespace rockfrac

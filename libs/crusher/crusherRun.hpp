@@ -3,31 +3,26 @@
 // the gyrating mantle and the fixed concave as triangulated walls, the feed factory,
 // the choke plane, the destructor below the discharge (docs/theory-crusher.md).
 //
-//   CrusherRun run(app);   // reads and checks every input (UserError before any step)
-//   return run.execute();  // time loop; returns the exit code
+// The run is a TimedRun (core/timeLoop.hpp): its step, its rows and its VTK writes; the
+// loop, the write rules and signals are TimeLoop's. It cannot restart (cells are inserted
+// and removed; no state file), so it writes no time directories, only VTK/cells_<step>.vtu.
 //
-// Writes postProcessing/machine/0/machine.dat (mantle force, torque about the pivot,
-// power, masses inside, fed and discharged, energies), postProcessing/discharge/0/
-// discharge.dat (one row per fragment that left) and VTK/cells_<step>.vtu.
+//   TimeLoop loop(app);
+//   const std::unique_ptr<TimedRun> run = newCrusherRun(app, loop);  // reads and checks every input
+//   run->printSetup();
+//   return loop.run(*run);
+//
+// Writes postProcessing/machine/0/machine.dat (means over each sampling window of the
+// mantle force, torque about the pivot and power; masses inside, fed and discharged,
+// energies), postProcessing/discharge/0/discharge.dat (one row per fragment that left)
+// and VTK/cells_<step>.vtu.
 #include <memory>
 
 #include "core/application.hpp"
+#include "core/timeLoop.hpp"
 
 namespace rockfrac {
 
-class CrusherRun {
-public:
-    explicit CrusherRun(const Application& app);
-    ~CrusherRun();
-    CrusherRun(const CrusherRun&) = delete;
-    CrusherRun& operator=(const CrusherRun&) = delete;
-
-    void printSetup() const;
-    int execute();
-
-private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
-};
+std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop);
 
 }  // namespace rockfrac

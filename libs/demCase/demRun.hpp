@@ -1,28 +1,21 @@
 #pragma once
-// A bondedDemFoam run: everything between reading the case and the last write.
+// bondedDemFoam with plates: a bonded Voronoi specimen loaded between two rigid plates.
 //
-// The solver application is a thin main over this class:
-//   BondedDemRun run(app);   // reads and checks every input (UserError before any step)
-//   return run.execute();    // time loop; returns the exit code
+// The run is a TimedRun (core/timeLoop.hpp): its step (CPU or CUDA backend), its
+// plateForce.dat rows, its stop criterion and its time directories (<time>/demState,
+// VTK/cells_<step>.vtu); the loop, the write rules, signals and restart are TimeLoop's.
+//
+//   TimeLoop loop(app);
+//   const std::unique_ptr<TimedRun> run = newBondedDemRun(app, loop);  // reads and checks every input
+//   run->printSetup();
+//   return loop.run(*run);
 #include <memory>
 
 #include "core/application.hpp"
+#include "core/timeLoop.hpp"
 
 namespace rockfrac {
 
-class BondedDemRun {
-public:
-    explicit BondedDemRun(const Application& app);
-    ~BondedDemRun();
-    BondedDemRun(const BondedDemRun&) = delete;
-    BondedDemRun& operator=(const BondedDemRun&) = delete;
-
-    void printSetup() const;
-    int execute();
-
-private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
-};
+std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop);
 
 }  // namespace rockfrac

@@ -7,8 +7,6 @@
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "core/memoryLimit.hpp"
-#include "core/progress.hpp"
-#include "core/timeControl.hpp"
 #include "fem/measurements.hpp"
 #include "femCase/femCase.hpp"
 #include "io/timeSeries.hpp"
@@ -38,58 +36,97 @@ Bounds3 meshBounds(const TetMesh& mesh)
     return b;
 }
 
-}  // namespace
+// The FEM run: reads and checks every input in its constructor (UserError before any
+// step); TimeLoop drives it through the hooks below.
+class FeFractureRun final : public TimedRun {
+public:
+    FeFractureRun(const Application& a, TimeLoop& loop);
+    // The log's set-up and summary.
+    void printSetup() const override;
+    void report(bool interrupted) override;
 
-struct FeFractureRun::Impl {
-    const Application& app;
-    Dictionary controlDict;
-    TimeControl time;
-    FemParameters parameters;
-    FemLoading loading;
-    TetMesh mesh;
-    Bounds3 bounds;
-    std::unique_ptr<FemModel> model;
-    std::unique_ptr<VirtualExtensometer> extensometer;
-    int lowerPlate = -1, upperPlate = -1;
-    std::vector<double> arcUnitForces;  // per Pa
-    double arcTopForcePerPascal = 0.0;
-    MaterialPoint topPole, bottomPole;  // arc load: the approach of the two poles
-    long sampleInterval = 10;
-    // centreStress function: elements whose centroid lies within `radius` of the line
-    // through the specimen centre along y (the disc axis); empty = off.
-    std::vector<int> probeElements;
-    double probeRadius = 0.0;
-    double stableStep = 0.0;
-    FemRunState run;
-    std::vector<FailureLoadDetector> detectors;
-    bool restarted = false;
-    bool quasiStaticWarned = false;
+    // ---- the loop's hooks (core/timeLoop.hpp), in the loop's order
 
-    explicit Impl(const Application& a)
-        : app(a),
-          controlDict(Dictionary::readFile(a.path("system/controlDict"))),
-          time(controlDict, a.casePath())
+    long start(bool) override
     {
-        parameters = readFemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
-        const Dictionary loadingDict = Dictionary::readFile(a.path("constant/loading"));
-        loading = readFemLoading(loadingDict);
-        readSolverControls();
-        const fs::path msh = a.path("constant/feMesh/specimen.msh");
-        if (!fs::exists(msh))
-            throw UserError("missing " + msh.string() +
-                            "; run meshRock with a system/feMeshDict first to make the tetrahedral mesh");
-        mesh = readGmshMesh(msh.string());  // rejects inverted or degenerate elements
-        checkFemMemory(msh);
-        bounds = meshBounds(mesh);
-        model = std::make_unique<FemModel>(mesh, parameters);
-        placeLoads(loadingDict);
-        chooseTimeStep();
-        checkPlateReachesSpecimen(loadingDict);
-        readFunctions();
-        initialiseDetectors();
-        if (time.restarting()) restoreState();
+        // The .dat files print 10 digits, so the row of the restart time may read back a little
+        // above it; the next row is a whole step later (dt / t >> 1e-9).
+        const double restartTime = restarted ? model->time() * (1 + 1e-9) : -1.0;
+        plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce",
+                                                              plateForceColumns(), restartTime);
+        extensometerSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "extensometer",
+                                                                extensometerColumns(), restartTime);
+        if (!probeElements.empty())
+            centreStressSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "centreStress",
+                                                                    centreStressColumns(), restartTime);
+        return restarted ? run.step : 0;
     }
 
+    Sampling sampling() const override { return {sampleInterval, Sampling::Rows::instantaneous}; }
+
+    void beforeStep(long) override { applyStage(model->time(), runTime.deltaT()); }
+
+    StepResult advance(double deltaT) override
+    {
+        const StepStatus status = model->step(deltaT);
+        return {status.ok, status.message};
+    }
+
+    // The running maxima and detectors every step; the arc load's failure at the sample steps.
+    void afterStep(long step) override
+    {
+        track();
+        if (step % sampleInterval == 0) trackArcFailure();
+    }
+
+    void sample() override
+    {
+        plateForceSeries->append(plateForceRow());
+        extensometerSeries->append(extensometerRow());
+        if (centreStressSeries) centreStressSeries->append(centreStressRow());
+        checkQuasiStatic();
+    }
+
+    std::string stopReason() const override
+    {
+        if (!loadingStarted(model->time())) return {};
+        if (loading.kind == FemLoading::Kind::arcLoad) {
+            if (!detectors[1].failed()) return {};
+            return "failure under the arc load (kinetic energy above 1 % of the external work)";
+        }
+        if (!(loading.stopForceFraction > 0)) return {};
+        if (!(run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
+              plateForce() < loading.stopForceFraction * run.peakForce))
+            return {};
+        return "stop criterion met (force below the set fraction of its peak)";
+    }
+
+    void writeTime(long step) override
+    {
+        run.step = step;
+        runTime.writeTimeDir(model->time(),
+                             [&](const fs::path& dir) { writeFemState(dir / "femState", *model, run); });
+        writeFemVtk(app.casePath(), step, *model, restarted || step > 0);
+    }
+
+    std::string writeFailure(long step) override
+    {
+        writeFemVtk(app.casePath(), step, *model, true);
+        return "VTK/fem_" + std::to_string(step) + ".vtu";
+    }
+
+    double time() const override { return model->time(); }
+
+    std::string progress() const override
+    {
+        char buffer[200];
+        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  cracked %ld/%zu  KE/W %.2g %%",
+                      1e-3 * plateForce(), 1e-3 * run.peakForce, crackedElements(), mesh.numTets(),
+                      100 * kineticRatio());
+        return buffer;
+    }
+
+private:
     // Refuse a mesh whose model cannot fit, before the model's arrays exist
     // (core/memoryLimit.hpp). Bytes per node (positions, displacements,
     // velocities, forces, masses and their parallel partial sums) and per
@@ -164,13 +201,13 @@ struct FeFractureRun::Impl {
     void chooseTimeStep()
     {
         stableStep = model->stableTimeStep();
-        if (!time.deltaTGiven()) {
-            time.setDeltaT(stableStep);
+        if (!runTime.deltaTGiven()) {
+            runTime.setDeltaT(stableStep);
             return;
         }
         const double limit = stableStep / parameters.timeStepSafety;
-        if (time.deltaT() > limit)
-            throw UserError(controlDict.fileName() + ": deltaT " + formatNumber(time.deltaT()) +
+        if (runTime.deltaT() > limit)
+            throw UserError(controlDict.fileName() + ": deltaT " + formatNumber(runTime.deltaT()) +
                             " s exceeds the stable step " + formatNumber(limit) +
                             " s of this mesh; remove deltaT to use timeStepSafety x the stable step");
     }
@@ -179,26 +216,21 @@ struct FeFractureRun::Impl {
     void checkPlateReachesSpecimen(const Dictionary& loadingDict) const
     {
         if (loading.kind != FemLoading::Kind::plates) return;
-        const double loadingTime = std::max(0.0, time.endTime() - loading.settlingTime);
+        const double loadingTime = std::max(0.0, runTime.endTime() - loading.settlingTime);
         const double travel = loading.approachSpeed() * loadingTime;
         if (travel <= loading.startGap)
             throw UserError(
                 loadingDict.fileName() + ": the upper plate travels " + formatNumber(travel) +
-                " m by endTime " + formatNumber(time.endTime()) + " s, less than plates/startGap " +
+                " m by endTime " + formatNumber(runTime.endTime()) + " s, less than plates/startGap " +
                 formatNumber(loading.startGap) +
                 " m: it never touches the specimen; reduce startGap or raise endTime or the speed");
     }
 
     void readFunctions()
     {
+        sampleInterval = readSampleInterval(controlDict, "plateForce", sampleInterval);
         if (!controlDict.found("functions")) return;
         const Dictionary& functions = controlDict.subDict("functions");
-        if (functions.found("plateForce"))
-            sampleInterval =
-                functions.subDict("plateForce").getOrDefault<long>("writeInterval", sampleInterval);
-        if (sampleInterval < 1)
-            throw UserError(controlDict.fileName() +
-                            ": functions/plateForce/writeInterval must be >= 1 step");
         if (functions.found("centreStress")) {
             static const Dimensions metre = Dimensions::fromUnits("m");
             probeRadius = functions.subDict("centreStress").getScalar("radius", Bounds::positive(), &metre);
@@ -252,7 +284,7 @@ struct FeFractureRun::Impl {
 
     void restoreState()
     {
-        const fs::path file = app.path(time.startTimeName()) / "femState";
+        const fs::path file = app.path(runTime.startTimeName()) / "femState";
         run = readFemState(file, *model);
         if (run.detectorMaximum.size() != detectors.size())
             throw UserError(file.string() + ": the failure-load detectors do not match this solver");
@@ -489,33 +521,6 @@ struct FeFractureRun::Impl {
         return v;
     }
 
-    void writeTime()
-    {
-        const double t = model->time();
-        const fs::path staging = time.prepareStagingDir(t);
-        writeFemState(staging / "femState", *model, run);
-        time.commitTimeDir(t);
-        writeFemVtk(app.casePath(), run.step, *model, restarted || run.step > 0);
-    }
-
-    bool stopCriterionMet() const
-    {
-        if (!loadingStarted(model->time())) return false;
-        if (loading.kind == FemLoading::Kind::arcLoad) return detectors[1].failed();
-        if (!(loading.stopForceFraction > 0)) return false;
-        return run.peakForce > loading.minPeakForce && run.peakForce > 0 &&
-               plateForce() < loading.stopForceFraction * run.peakForce;
-    }
-
-    std::string progressExtras() const
-    {
-        char buffer[200];
-        std::snprintf(buffer, sizeof(buffer), "F %.4g kN (peak %.4g)  cracked %ld/%zu  KE/W %.2g %%",
-                      1e-3 * plateForce(), 1e-3 * run.peakForce, crackedElements(), mesh.numTets(),
-                      100 * kineticRatio());
-        return buffer;
-    }
-
     // postProcessing/failureLoad/0/failureLoad.dat: one row for the first-drop criterion.
     void writeFailureLoad() const
     {
@@ -557,134 +562,116 @@ struct FeFractureRun::Impl {
                         1e3 * height, 1e3 * (bounds.hi.y - bounds.lo.y),
                         1e-6 * 2 * load(1) / (M_PI * height * (bounds.hi.y - bounds.lo.y)));
     }
+
+    const Application& app;
+    FemParameters parameters;
+    FemLoading loading;
+    TetMesh mesh;
+    Bounds3 bounds;
+    std::unique_ptr<FemModel> model;
+    std::unique_ptr<VirtualExtensometer> extensometer;
+    int lowerPlate = -1, upperPlate = -1;
+    std::vector<double> arcUnitForces;  // per Pa
+    double arcTopForcePerPascal = 0.0;
+    MaterialPoint topPole, bottomPole;  // arc load: the approach of the two poles
+    long sampleInterval = 10;           // steps between rows (functions/plateForce/writeInterval)
+    std::unique_ptr<TimeSeriesWriter> plateForceSeries, extensometerSeries, centreStressSeries;
+    // centreStress function: elements whose centroid lies within `radius` of the line
+    // through the specimen centre along y (the disc axis); empty = off.
+    std::vector<int> probeElements;
+    double probeRadius = 0.0;
+    double stableStep = 0.0;
+    FemRunState run;
+    std::vector<FailureLoadDetector> detectors;
+    bool restarted = false;
+    bool quasiStaticWarned = false;
 };
 
-FeFractureRun::FeFractureRun(const Application& app) : impl_(std::make_unique<Impl>(app)) {}
-FeFractureRun::~FeFractureRun() = default;
+FeFractureRun::FeFractureRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
+{
+    parameters = readFemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
+    const Dictionary loadingDict = Dictionary::readFile(a.path("constant/loading"));
+    loading = readFemLoading(loadingDict);
+    readSolverControls();
+    const fs::path msh = a.path("constant/feMesh/specimen.msh");
+    if (!fs::exists(msh))
+        throw UserError("missing " + msh.string() +
+                        "; run meshRock with a system/feMeshDict first to make the tetrahedral mesh");
+    mesh = readGmshMesh(msh.string());  // rejects inverted or degenerate elements
+    checkFemMemory(msh);
+    bounds = meshBounds(mesh);
+    model = std::make_unique<FemModel>(mesh, parameters);
+    placeLoads(loadingDict);
+    chooseTimeStep();
+    checkPlateReachesSpecimen(loadingDict);
+    readFunctions();
+    initialiseDetectors();
+    if (runTime.restarting()) restoreState();
+}
 
 void FeFractureRun::printSetup() const
 {
-    const Impl& r = *impl_;
     double mass = 0;
-    for (double m : r.model->nodalMasses()) mass += m;
-    const ElasticParameters& m = r.parameters.rock;
+    for (double m : model->nodalMasses()) mass += m;
+    const ElasticParameters& m = parameters.rock;
     std::printf("Mesh: %zu tets, %zu nodes, %zu boundary nodes; extent %.4g x %.4g x %.4g mm\n",
-                r.mesh.numTets(), r.mesh.numNodes(), r.model->contactNodes().size(),
-                1e3 * (r.bounds.hi.x - r.bounds.lo.x), 1e3 * (r.bounds.hi.y - r.bounds.lo.y),
-                1e3 * (r.bounds.hi.z - r.bounds.lo.z));
+                mesh.numTets(), mesh.numNodes(), model->contactNodes().size(),
+                1e3 * (bounds.hi.x - bounds.lo.x), 1e3 * (bounds.hi.y - bounds.lo.y),
+                1e3 * (bounds.hi.z - bounds.lo.z));
     std::printf("Material %s: E %.4g GPa, nu %.3g, density %.5g kg/m^3%s\n",
-                r.parameters.material->type().c_str(), 1e-9 * m.youngsModulus, m.poissonRatio, m.density,
-                r.parameters.material->describe().c_str());
+                parameters.material->type().c_str(), 1e-9 * m.youngsModulus, m.poissonRatio, m.density,
+                parameters.material->describe().c_str());
     std::printf(
         "Time step %.4g s (stable step x safety %.4g s); end time %.4g s (%ld steps); mass %.5g kg, "
         "added mass %.3g %%; mass damping %.4g 1/s\n",
-        r.time.deltaT(), r.stableStep, r.time.endTime(), r.time.endStep(), mass,
-        100 * r.model->addedMassFraction(), r.parameters.massDamping);
-    if (r.loading.kind == FemLoading::Kind::plates)
+        runTime.deltaT(), stableStep, runTime.endTime(), runTime.endStep(), mass,
+        100 * model->addedMassFraction(), parameters.massDamping);
+    if (loading.kind == FemLoading::Kind::plates)
         std::printf(
             "Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, friction %.3g/%.3g, start gap "
             "%.4g mm, settling %.4g s, gravity (%g %g %g)\n",
-            r.loading.upper.velocity.x, r.loading.upper.velocity.y, r.loading.upper.velocity.z,
-            r.loading.lower.velocity.x, r.loading.lower.velocity.y, r.loading.lower.velocity.z,
-            r.loading.upper.friction, r.loading.lower.friction, 1e3 * r.loading.startGap,
-            r.loading.settlingTime, r.loading.gravity.x, r.loading.gravity.y, r.loading.gravity.z);
-    if (r.loading.kind == FemLoading::Kind::plates && r.loading.contactCrushingPressure > 0)
+            loading.upper.velocity.x, loading.upper.velocity.y, loading.upper.velocity.z,
+            loading.lower.velocity.x, loading.lower.velocity.y, loading.lower.velocity.z,
+            loading.upper.friction, loading.lower.friction, 1e3 * loading.startGap, loading.settlingTime,
+            loading.gravity.x, loading.gravity.y, loading.gravity.z);
+    if (loading.kind == FemLoading::Kind::plates && loading.contactCrushingPressure > 0)
         std::printf(
             "Contact crushing: plate pressure on a contact node at most %.4g MPa (plates/crushingPressure)\n",
-            1e-6 * r.loading.contactCrushingPressure);
-    if (r.loading.kind == FemLoading::Kind::arcLoad)
+            1e-6 * loading.contactCrushingPressure);
+    if (loading.kind == FemLoading::Kind::arcLoad)
         std::printf(
             "Arc load: 2 x %.4g deg arcs, pressure rate %.4g Pa/s, resultant %.5g N per Pa of pressure\n",
-            2 * r.loading.arc.halfAngle * 180 / M_PI, r.loading.arc.pressureRate, r.arcTopForcePerPascal);
+            2 * loading.arc.halfAngle * 180 / M_PI, loading.arc.pressureRate, arcTopForcePerPascal);
     std::printf(
         "Extensometer: l = %.4g mm along z; failure load: first drop of more than %.0f %% below the running "
         "maximum; quasi-static check: KE / W_ext < %.0f %%\n",
-        1e3 * r.loading.extensometerLength, 100 * r.loading.failureDropFraction, 100 * quasiStaticLimit);
-    if (!r.probeElements.empty())
+        1e3 * loading.extensometerLength, 100 * loading.failureDropFraction, 100 * quasiStaticLimit);
+    if (!probeElements.empty())
         std::printf("centreStress: mean stress of %zu elements within %.4g mm of the disc axis\n",
-                    r.probeElements.size(), 1e3 * r.probeRadius);
-    if (r.restarted)
-        std::printf("Restart from time %s (step %ld)\n", r.time.startTimeName().c_str(), r.run.step);
+                    probeElements.size(), 1e3 * probeRadius);
+    if (restarted)
+        std::printf("Restart from time %s (step %ld)\n", runTime.startTimeName().c_str(), run.step);
 }
 
-int FeFractureRun::execute()
+void FeFractureRun::report(bool interrupted)
 {
-    Impl& r = *impl_;
-    if (r.app.dryRun()) {
-        std::printf("Dry run: every input is valid; nothing run, nothing written.\n");
-        return exitSuccess;
-    }
-    installInterruptHandlers();
-    // The .dat files print 10 digits, so the row of the restart time may read back a little
-    // above it; the next row is a whole step later (dt / t >> 1e-9).
-    const double restartTime = r.restarted ? r.model->time() * (1 + 1e-9) : -1.0;
-    TimeSeriesWriter plateForce(r.app.casePath(), "plateForce", Impl::plateForceColumns(), restartTime);
-    TimeSeriesWriter extensometer(r.app.casePath(), "extensometer", Impl::extensometerColumns(), restartTime);
-    std::unique_ptr<TimeSeriesWriter> centreStress;
-    if (!r.probeElements.empty())
-        centreStress = std::make_unique<TimeSeriesWriter>(r.app.casePath(), "centreStress",
-                                                          Impl::centreStressColumns(), restartTime);
-    auto sample = [&] {
-        plateForce.append(r.plateForceRow());
-        extensometer.append(r.extensometerRow());
-        if (centreStress) centreStress->append(r.centreStressRow());
-        r.checkQuasiStatic();
-    };
-    const double dt = r.time.deltaT();
-    if (!r.restarted) {
-        r.applyStage(0.0, dt);
-        r.writeTime();
-        sample();
-    }
-    ProgressReporter progress(r.time.startTime(), r.time.endTime());
-    const long endStep = r.time.endStep();
-    std::string reason = "end time reached";
-    int exitCode = exitSuccess;
-    while (r.run.step < endStep) {
-        r.applyStage(r.model->time(), dt);
-        const StepStatus status = r.model->step(dt);
-        ++r.run.step;
-        if (!status.ok) {
-            writeFemVtk(r.app.casePath(), r.run.step, *r.model, true);
-            const auto times = TimeControl::timeDirectories(r.app.casePath());
-            throw UserError(status.message + ". Last complete time directory: " +
-                            (times.empty() ? std::string("none") : r.time.timeName(times.back())) +
-                            "; the failing state is in VTK/fem_" + std::to_string(r.run.step) + ".vtu");
-        }
-        r.track();
-        const bool sampleDue = r.run.step % r.sampleInterval == 0;
-        if (sampleDue) r.trackArcFailure(), sample();
-        const bool stop = r.stopCriterionMet();
-        if (interrupted()) {
-            reason = "interrupted by a signal: state written, continue with startFrom latestTime";
-            exitCode = interruptExitCode();
-        }
-        if (stop)
-            reason = r.loading.kind == FemLoading::Kind::arcLoad
-                         ? "failure under the arc load (kinetic energy above 1 % of the external work)"
-                         : "stop criterion met (force below the set fraction of its peak)";
-        // A write time adds a row to the series only when the uninterrupted run has it
-        // too: not at the step a signal arrived, or the continued series would differ.
-        const bool regularWrite = r.time.writeDue(r.run.step) || stop || r.run.step == endStep;
-        if (regularWrite || exitCode != exitSuccess) {
-            if (!sampleDue && regularWrite) sample();
-            r.writeTime();
-        }
-        if (stop || exitCode != exitSuccess) break;
-        progress.update(r.run.step, r.model->time(), [&] { return r.progressExtras(); });
-    }
-    progress.finish(r.run.step, r.model->time(), reason);
-    const EnergyBalance& e = r.model->energy();
-    std::printf("Peak force %.6g N; %ld of %zu elements cracked (D1 = 1)\n", r.run.peakForce,
-                r.crackedElements(), r.mesh.numTets());
+    const EnergyBalance& e = model->energy();
+    std::printf("Peak force %.6g N; %ld of %zu elements cracked (D1 = 1)\n", run.peakForce, crackedElements(),
+                mesh.numTets());
     std::printf(
         "Energy: external work %.4g J, internal work %.4g J, damping %.4g J, kinetic %.4g J, strain %.4g J\n",
-        e.externalWork, e.internalWork, e.dampingWork, r.model->kineticEnergy(), r.model->strainEnergy());
-    r.reportQuasiStatic(plateForce.path());
-    r.reportCrackLocation();
-    r.reportContactCrushing();
-    if (exitCode == exitSuccess) r.writeFailureLoad();
-    return exitCode;
+        e.externalWork, e.internalWork, e.dampingWork, model->kineticEnergy(), model->strainEnergy());
+    reportQuasiStatic(plateForceSeries->path());
+    reportCrackLocation();
+    reportContactCrushing();
+    if (!interrupted) writeFailureLoad();
+}
+
+}  // namespace
+
+std::unique_ptr<TimedRun> newFeFractureRun(const Application& app, TimeLoop& loop)
+{
+    return std::make_unique<FeFractureRun>(app, loop);
 }
 
 }  // namespace rockfrac

@@ -1,28 +1,22 @@
 #pragma once
-// A feFractureSolver run: everything between reading the case and the last write.
+// A feFractureSolver run: a tetrahedral specimen with the KST-DFH rock model, loaded by
+// rigid plates or by a pressure on two arcs of a disc.
 //
-// The solver application is a thin main over this class:
-//   FeFractureRun run(app);   // reads and checks every input (UserError before any step)
-//   return run.execute();     // time loop; returns the exit code
+// The run is a TimedRun (core/timeLoop.hpp): its step, its rows (plateForce, extensometer,
+// centreStress), its stop criterion and its time directories (<time>/femState,
+// VTK/fem_<step>.vtu); the loop, the write rules, signals and restart are TimeLoop's.
+//
+//   TimeLoop loop(app);
+//   const std::unique_ptr<TimedRun> run = newFeFractureRun(app, loop);  // reads and checks every input
+//   run->printSetup();
+//   return loop.run(*run);
 #include <memory>
 
 #include "core/application.hpp"
+#include "core/timeLoop.hpp"
 
 namespace rockfrac {
 
-class FeFractureRun {
-public:
-    explicit FeFractureRun(const Application& app);
-    ~FeFractureRun();
-    FeFractureRun(const FeFractureRun&) = delete;
-    FeFractureRun& operator=(const FeFractureRun&) = delete;
-
-    void printSetup() const;
-    int execute();
-
-private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
-};
+std::unique_ptr<TimedRun> newFeFractureRun(const Application& app, TimeLoop& loop);
 
 }  // namespace rockfrac

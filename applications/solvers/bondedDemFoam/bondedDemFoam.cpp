@@ -16,6 +16,7 @@
 
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
+#include "core/timeLoop.hpp"
 #include "crusher/crusherRun.hpp"
 #include "crusher/machineLoading.hpp"
 #include "demCase/demRun.hpp"
@@ -44,13 +45,14 @@ int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
         const auto loading = app.path("constant/loading");
-        if (std::filesystem::exists(loading) && isMachineLoading(Dictionary::readFile(loading))) {
-            CrusherRun run(app);
-            run.printSetup();
-            return run.execute();
-        }
-        BondedDemRun run(app);
-        run.printSetup();
-        return run.execute();
+        const bool crusher =
+            std::filesystem::exists(loading) && isMachineLoading(Dictionary::readFile(loading));
+        TimeLoop loop(app);  // system/controlDict: time and write control
+        // Reads and checks every input: plates on a specimen, or a cone crusher.
+        const std::unique_ptr<TimedRun> run = crusher ? newCrusherRun(app, loop) : newBondedDemRun(app, loop);
+        run->printSetup();
+        // Until endTime or the stop criterion: per step the stage, the step, the rows and
+        // the write rules; SIGINT/SIGTERM write the state (libs/core/timeLoop.hpp).
+        return loop.run(*run);
     });
 }

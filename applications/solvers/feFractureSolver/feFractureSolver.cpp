@@ -16,6 +16,7 @@
 //   feFractureSolver -case tutorials/BDT/graniteFEM
 //   feFractureSolver -case tutorials/BDT/graniteFEM -dry-run
 #include "core/application.hpp"
+#include "core/timeLoop.hpp"
 #include "femCase/femRun.hpp"
 
 using namespace rockfrac;
@@ -40,8 +41,11 @@ const AppInfo info{
 int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
-        FeFractureRun run(app);
-        run.printSetup();
-        return run.execute();
+        TimeLoop loop(app);  // system/controlDict: time and write control
+        const std::unique_ptr<TimedRun> run = newFeFractureRun(app, loop);  // reads and checks every input
+        run->printSetup();
+        // Until endTime or the stop criterion: per step the stage, the step, the rows and
+        // the write rules; SIGINT/SIGTERM write the state (libs/core/timeLoop.hpp).
+        return loop.run(*run);
     });
 }
