@@ -31,12 +31,12 @@
 #include "crusher/feedRock.hpp"
 #include "crusher/linerClearance.hpp"
 #include "dem/demModel.hpp"
+#include "dem/voronoiQnscBond.hpp"
 #include "demCase/demCase.hpp"
 #include "demCuda/cudaDemModel.hpp"
 #include "voronoi/domain.hpp"
 #include "voronoi/tessellation.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
-#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 

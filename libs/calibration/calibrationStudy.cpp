@@ -218,9 +218,10 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
         s.seeds = seeds;
     }
     if (s.model == "fem" && (!s.seeds || s.seeds->values.size() < 2))
-        throw UserError(dict.endLocation().str() +
-                        ": the FEM calibration compares distributions: give seeds { entry kstDfh/dfh/seed; values "
-                        "(1 ... 10); }");
+        throw UserError(
+            dict.endLocation().str() +
+            ": the FEM calibration compares distributions: give seeds { entry kstDfh/dfh/seed; values "
+            "(1 ... 10); }");
     readMethodSettings(dict, s);
     readTarget(dict, s);
     return s;

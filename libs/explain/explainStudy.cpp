@@ -173,11 +173,11 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
                   "the model's own scatter is measured over several Voronoi seeds (4 or more recommended)");
 
     if (!dict.isDict("baseline"))
-        throw UserError(
-            dict.fileName() +
-            ": 'baseline { tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (10e6 60e6); } }' is "
-            "required: the parameters calibrated as usual, re-fitted with each candidate effect "
-            "('baseline { }' tests the case as it is calibrated)");
+        throw UserError(dict.fileName() +
+                        ": 'baseline { tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (10e6 "
+                        "60e6); } }' is "
+                        "required: the parameters calibrated as usual, re-fitted with each candidate effect "
+                        "('baseline { }' tests the case as it is calibrated)");
     for (const Entry& e : dict.subDict("baseline").entries()) {
         if (!e.isDict())
             throw UserError(e.keywordLocation.str() + ": baseline parameter '" + e.keyword +

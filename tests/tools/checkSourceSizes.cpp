@@ -1,12 +1,11 @@
 // checkSourceSizes <source dir> <allow-list>
 //
-// The size rule of the code (files under 800 lines, functions under 150): lists every source file (.cpp .hpp .h .cu .cuh) under libs/ and applications/
-// of more than 800 lines and every function of more than 150 (measured by
-// sourceSizes.hpp's brace matcher, from the first line of its declaration to its
-// closing brace). An allow-list line `path[:function] reason` lets one through; an
-// entry without a reason, or one that no longer matches anything over a limit, is an
-// error too, so the list stays short and true. Exit 0 when nothing is over a limit
-// that the list does not allow, else 1.
+// The size rule of the code (files under 800 lines, functions under 150): lists every source file (.cpp .hpp
+// .h .cu .cuh) under libs/ and applications/ of more than 800 lines and every function of more than 150
+// (measured by sourceSizes.hpp's brace matcher, from the first line of its declaration to its closing brace).
+// An allow-list line `path[:function] reason` lets one through; an entry without a reason, or one that no
+// longer matches anything over a limit, is an error too, so the list stays short and true. Exit 0 when
+// nothing is over a limit that the list does not allow, else 1.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -82,7 +81,8 @@ std::vector<fs::path> sourceFiles(const fs::path& root)
         }
         for (const auto& e : fs::recursive_directory_iterator(root / top)) {
             const std::string ext = e.path().extension().string();
-            if (e.is_regular_file() && (ext == ".cpp" || ext == ".hpp" || ext == ".h" || ext == ".cu" || ext == ".cuh")) {
+            if (e.is_regular_file() &&
+                (ext == ".cpp" || ext == ".hpp" || ext == ".h" || ext == ".cu" || ext == ".cuh")) {
                 files.push_back(fs::relative(e.path(), root));
             }
         }
@@ -120,8 +120,8 @@ int main(int argc, char** argv)
         const std::string text = readFile(root / rel);
         const int lines = countLines(text);
         if (lines > maxFileLines) {
-            judge(path, path + ": " + std::to_string(lines) + " lines (limit " + std::to_string(maxFileLines) +
-                            "): split it along its seams");
+            judge(path, path + ": " + std::to_string(lines) + " lines (limit " +
+                            std::to_string(maxFileLines) + "): split it along its seams");
         }
         std::string error;
         for (const FunctionSpan& f : findFunctions(text, error)) {

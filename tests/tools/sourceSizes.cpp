@@ -105,12 +105,14 @@ std::string blankNonCode(const std::string& in)
             }
         } else if (c == '"') {
             const std::string prefix = tokenBefore(in, i);
-            const bool raw = prefix == "R" || prefix == "u8R" || prefix == "uR" || prefix == "UR" || prefix == "LR";
+            const bool raw =
+                prefix == "R" || prefix == "u8R" || prefix == "uR" || prefix == "UR" || prefix == "LR";
             i = raw ? blankRaw(in, out, i) : blankQuoted(in, out, i, '"');
             lineStart = false;
         } else if (c == '\'') {
             const std::string before = tokenBefore(in, i);
-            const bool digitSeparator = !before.empty() && std::isdigit(static_cast<unsigned char>(before[0])) != 0;
+            const bool digitSeparator =
+                !before.empty() && std::isdigit(static_cast<unsigned char>(before[0])) != 0;
             i = digitSeparator ? i + 1 : blankQuoted(in, out, i, '\'');
             lineStart = false;
         } else {
@@ -202,7 +204,8 @@ bool hasTopLevel(const std::string& h, char what)
             }
             const char before = k > 0 ? h[k - 1] : ' ';
             const char after = k + 1 < h.size() ? h[k + 1] : ' ';
-            const bool comparison = after == '=' || before == '=' || before == '!' || before == '<' || before == '>';
+            const bool comparison =
+                after == '=' || before == '=' || before == '!' || before == '<' || before == '>';
             const bool isOperator = h.find("operator") != std::string::npos;
             if (!comparison && !isOperator) {
                 return true;
@@ -216,7 +219,8 @@ bool hasTopLevel(const std::string& h, char what)
 Brace classify(const std::string& header)
 {
     const std::string h = stripPrefixes(header);
-    if (startsWithWord(h, "namespace") || (startsWithWord(h, "inline") && trim(h.substr(6)).rfind("namespace", 0) == 0)) {
+    if (startsWithWord(h, "namespace") ||
+        (startsWithWord(h, "inline") && trim(h.substr(6)).rfind("namespace", 0) == 0)) {
         return Brace::scope;
     }
     if (startsWithWord(h, "extern") && trim(h.substr(6)).rfind('"', 0) == 0) {
@@ -308,8 +312,8 @@ std::string functionName(const std::string& header)
         if (h[k] == '(' && depth == 0) {
             const std::size_t b = qualifiedNameStart(h, k, true);
             const std::string name = collapse(h.substr(b, k - b));
-            const bool notAName = name.empty() || name == "decltype" || name == "alignas" || name == "__attribute__" ||
-                                  name == "__declspec" || name == "noexcept";
+            const bool notAName = name.empty() || name == "decltype" || name == "alignas" ||
+                                  name == "__attribute__" || name == "__declspec" || name == "noexcept";
             if (!notAName) {
                 return name;
             }

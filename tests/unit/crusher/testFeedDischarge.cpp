@@ -10,8 +10,8 @@
 #include "crusher/destructor.hpp"
 #include "crusher/feedRock.hpp"
 #include "dem/demModel.hpp"
-#include "voronoi/tessellation.hpp"
 #include "dem/voronoiQnscBond.hpp"
+#include "voronoi/tessellation.hpp"
 
 using namespace rockfrac;
 
@@ -273,7 +273,7 @@ FedRun runFed(int threads, std::uint64_t seed)
     DemParameters p = testParameters();
     p.gravity = {0.0, 0.0, -200.0};  // faster falling: a short test
     VoronoiQnscBondLaw::Parameters q;
-    q.youngs_modulus = 4.6e9;   // 10 x softer than granite: a 3 x larger step
+    q.youngs_modulus = 4.6e9;  // 10 x softer than granite: a 3 x larger step
     p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.rock_youngs_modulus = 7.7e9;
     FeedSpec spec;

@@ -24,8 +24,8 @@
 
 #include "../dem/boxMeshes.hpp"
 #include "dem/demModel.hpp"
-#include "dem/voronoiQnscBond.hpp"
 #include "dem/gjk.hpp"
+#include "dem/voronoiQnscBond.hpp"
 #include "geometry/crusherGeometry.hpp"
 
 using namespace rockfrac;

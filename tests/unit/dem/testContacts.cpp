@@ -12,9 +12,9 @@
 #include "dem/demModel.hpp"
 #include "dem/gjk.hpp"
 #include "dem/surfaceFeatures.hpp"
+#include "dem/voronoiQnscBond.hpp"
 #include "demBackend.hpp"
 #include "geometry/triSurface.hpp"
-#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 

@@ -9,9 +9,9 @@
 
 #include "boxMeshes.hpp"
 #include "dem/demModel.hpp"
+#include "dem/voronoiQnscBond.hpp"
 #include "demBackend.hpp"
 #include "voronoi/tessellation.hpp"
-#include "dem/voronoiQnscBond.hpp"
 
 using namespace rockfrac;
 

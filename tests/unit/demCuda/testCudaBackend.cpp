@@ -11,8 +11,8 @@
 
 #include "boxMeshes.hpp"
 #include "dem/demModel.hpp"
-#include "demCuda/cudaDemModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
+#include "demCuda/cudaDemModel.hpp"
 
 using namespace rockfrac;
 

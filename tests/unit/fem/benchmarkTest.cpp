@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "fem/kstDfhMaterial.hpp"
 #include "fem/femModel.hpp"
+#include "fem/kstDfhMaterial.hpp"
 #include "femTestSupport.hpp"
 
 using namespace rockfrac;

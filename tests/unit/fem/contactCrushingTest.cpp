@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "fem/linearElasticMaterial.hpp"
 #include "fem/femModel.hpp"
+#include "fem/linearElasticMaterial.hpp"
 #include "femTestSupport.hpp"
 
 using namespace rockfrac;

@@ -6,10 +6,10 @@
 #include <cstring>
 #include <limits>
 
-#include "fem/linearElasticMaterial.hpp"
-#include "fem/kstDfhMaterial.hpp"
 #include "core/counterRandom.hpp"
 #include "fem/femModel.hpp"
+#include "fem/kstDfhMaterial.hpp"
+#include "fem/linearElasticMaterial.hpp"
 #include "femTestSupport.hpp"
 
 using namespace rockfrac;

@@ -15,8 +15,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "fem/linearElasticMaterial.hpp"
 #include "fem/femModel.hpp"
+#include "fem/linearElasticMaterial.hpp"
 #include "femTestSupport.hpp"
 
 namespace rockfrac::fem::test {

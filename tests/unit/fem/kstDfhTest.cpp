@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include "core/dictionary.hpp"
-#include "core/selector.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "fem/elementGeometry.hpp"
 #include "fem/kstDfhMaterial.hpp"
 #include "femTestSupport.hpp"
@@ -48,7 +48,9 @@ struct CrackBandElement {
         return p;
     }
     CrackBandElement(double edge, double strength)
-        : mesh(test::regularTet(edge)), geometry(makeElementGeometry(mesh)), material(ElasticParameters{}, parameters())
+        : mesh(test::regularTet(edge)),
+          geometry(makeElementGeometry(mesh)),
+          material(ElasticParameters{}, parameters())
     {
         material.initialise(geometry);
         KstDfhPointState state = material.pointState(0);
@@ -305,6 +307,7 @@ TEST_CASE("unknown material names list the known ones", "[fem]")
     const Dictionary empty("kstDfh", "rockProperties");
     CHECK_THROWS_WITH(femMaterials().make("granite", empty),
                       Catch::Contains("linearElastic") && Catch::Contains("kstDfh"));
-    CHECK(femMaterials().make("linearElastic", empty)->make(ElasticParameters{})->typeName() == "linearElastic");
+    CHECK(femMaterials().make("linearElastic", empty)->make(ElasticParameters{})->typeName() ==
+          "linearElastic");
     CHECK(defaultFemMaterial()->make(ElasticParameters{})->typeName() == "kstDfh");
 }

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-#include "fem/linearElasticMaterial.hpp"
-#include "fem/kstDfhMaterial.hpp"
 #include "core/error.hpp"
+#include "fem/kstDfhMaterial.hpp"
+#include "fem/linearElasticMaterial.hpp"
 #include "fem/measurements.hpp"
 #include "femCase/femCase.hpp"
 #include "femTestSupport.hpp"

@@ -31,7 +31,8 @@ const AppInfo info = {
      "caseDict constant/rockProperties -keywords",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -value",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set 28e6",
-     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment \"from BDT series 3\"",
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment \"from BDT series "
+     "3\"",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove"},
     {
         {"-entry", "key", "select an entry by its slash path, e.g. bond/voronoiQNSC/tensileStrength"},
