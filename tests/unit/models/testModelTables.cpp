@@ -13,6 +13,7 @@
 #include "dem/contactLaw.hpp"
 #include "effects/modelEffect.hpp"
 #include "fem/femMaterial.hpp"
+#include "parallel/decomposition.hpp"
 
 using namespace rockfrac;
 namespace fs = std::filesystem;
@@ -52,6 +53,7 @@ TEST_CASE("every selectable model has its reference page, and every page its mod
     for (const EffectDescriptor& d : effectLibrary()) effects.push_back(d.name);
     requirePages("effects", effects);
     CHECK(effectSelector().names() == effects);
+    requirePages("decomposition", decompositionMethods().names());
 }
 
 TEST_CASE("the selection tables hold the shipped models", "[models]")
@@ -60,6 +62,7 @@ TEST_CASE("the selection tables hold the shipped models", "[models]")
     CHECK(contactLawNames() == std::vector<std::string>{"hertzMindlin"});
     CHECK(fem::femMaterialNames() == std::vector<std::string>{"linearElastic", "kstDfh"});
     CHECK(effectLibrary().size() == 6);
+    CHECK(decompositionMethods().names() == std::vector<std::string>{"rcb"});
 }
 
 TEST_CASE("a model without coefficients may leave its sub-dictionary out, not fill it", "[models]")
