@@ -53,6 +53,10 @@ TimeControl::TimeControl(const Dictionary& d, const fs::path& caseDir) : case_(c
     purgeWrite_ = d.getOrDefault<int>("purgeWrite", 0);
     if (purgeWrite_ < 0) throw UserError(d.fileName() + ": purgeWrite must be >= 0 (0 keeps every write)");
     writePrecision_ = d.getOrDefault<int>("writePrecision", 8);
+    // A double has 17 significant digits; longer names only cut time directories short.
+    if (writePrecision_ < 1 || writePrecision_ > 17)
+        throw UserError(d.location("writePrecision").str() + ": writePrecision " + std::to_string(writePrecision_) +
+                        " is outside [1, 17] (a time has at most 17 significant digits); use 8 to 17");
     if (d.found("stopAt")) d.getWord("stopAt", {"endTime", "writeNow"});
 
     const std::vector<double> existing = timeDirectories(caseDir);
@@ -78,7 +82,15 @@ TimeControl::TimeControl(const Dictionary& d, const fs::path& caseDir) : case_(c
 
 long TimeControl::stepOf(double time) const
 {
-    return static_cast<long>(std::llround(time / deltaT_));
+    // Steps are counted in a long and t_n = n * deltaT must stay exact in a double: 10^15
+    // steps at most (about 3 years of wall time at 10^7 steps/s).
+    constexpr double maxSteps = 1e15;
+    const double steps = time / deltaT_;
+    if (!(steps <= maxSteps))
+        throw UserError((case_ / "system/controlDict").string() + ": time " + timeName(time) +
+                        " s is " + formatNumber(steps) + " steps of " + formatNumber(deltaT_) +
+                        " s, more than the 1e15 a run can count; lower endTime or raise deltaT");
+    return static_cast<long>(std::llround(steps));
 }
 
 bool TimeControl::writeDue(long step)

@@ -160,6 +160,17 @@ SETUP
 badCase endBeforeStart demRun "controlDict" "raise endTime" bondedDemFoam -case . <<'SETUP'
 caseDict -case . system/controlDict -entry endTime -set 1e-6
 SETUP
+# More steps than a run can count: was "(-9223372036854775808 steps)" and exit 0.
+badCase endTimeTooManySteps dem "controlDict" "lower endTime or raise deltaT" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 1e300
+SETUP
+badCase femEndTimeTooManySteps fem "controlDict" "lower endTime or raise deltaT" feFractureSolver -case . <<'SETUP'
+caseDict -case . system/controlDict -entry endTime -set 1e300
+SETUP
+# Time directory names cut at 63 characters: was a misleading restart failure.
+badCase writePrecisionTooHigh dem "controlDict" "writePrecision 60 is outside [1, 17]" bondedDemFoam -case . <<'SETUP'
+caseDict -case . system/controlDict -entry writePrecision -set 60
+SETUP
 # backend cuda where there is none: a build without CUDA, or no visible device
 # (CUDA_VISIBLE_DEVICES=-1 hides any GPU, so the case fails the same way everywhere).
 badCase cudaBackendUnavailable dem "controlDict" "backend cuda is not available" env CUDA_VISIBLE_DEVICES=-1 bondedDemFoam -case . <<'SETUP'
