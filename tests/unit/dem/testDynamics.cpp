@@ -99,7 +99,12 @@ TEST_CASE("bonded cluster without damping or breakage conserves energy", "[dem][
 namespace {
 
 // A weakly bonded block thrown on a plate under gravity: breakage, contacts, walls.
-std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
+// nx x ny x nz cells; more than 512 (demDetail::cell_block_size) make several work blocks.
+struct ClusterSize {
+    int nx = 5, ny = 5, nz = 4, steps = 1500;
+};
+std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters, const ClusterSize& size = {},
+                                     DemEnergies* energies = nullptr)
 {
     omp_set_num_threads(threads);
     DemParameters p;
@@ -110,7 +115,8 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
     p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.bond_damping = 0.05;
     p.damping_reading = DampingReading::criticalFraction;
-    DemModel model(test::boxBlockMesh(5, 5, 4, {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
+    DemModel model(test::boxBlockMesh(size.nx, size.ny, size.nz,
+                                      {dynamics_cell_size, dynamics_cell_size, dynamics_cell_size},
                                       dynamics_dilation, true, {0.0, 0.0, 0.2 * dynamics_dilation}),
                    p);
     model.addPlate({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
@@ -120,10 +126,11 @@ std::vector<Vec3> runEventfulCluster(int threads, DemCounters& counters)
                               model.cells().angular_velocity[c]);
     const double dt = 0.02 * model.rayleighTimeStep();
     int wall_contacts = 0;  // the most at any step
-    for (int i = 0; i < 1500; ++i) {
+    for (int i = 0; i < size.steps; ++i) {
         test::step(model, dt);
         wall_contacts = std::max(wall_contacts, model.counters().wall_contacts_active);
     }
+    if (energies) *energies = model.energies();
     counters = model.counters();
     counters.wall_contacts_active = wall_contacts;
     return model.cells().position;
@@ -143,6 +150,30 @@ TEST_CASE("gather determinism: 1 and 2 OpenMP threads give bitwise identical pos
     CHECK(one_counters.wall_contacts_active > 0);
     REQUIRE(one.size() == two.size());
     CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(Vec3)) == 0);
+    CHECK(one_counters.bonds_broken == two_counters.bonds_broken);
+}
+
+TEST_CASE("gather determinism over several work blocks: 1 and 2 threads give the same bits",
+          "[dem][determinism]")
+{
+    // 10 x 10 x 8 = 800 cells: two blocks of the per-block partial sums (512 cells each), so
+    // the kinetic energy, gravity's work and the finiteness check are summed over blocks that
+    // two threads fill concurrently, then added in block order.
+    const ClusterSize size{10, 10, 8, 300};
+    DemCounters one_counters, two_counters;
+    DemEnergies one_energies, two_energies;
+    const std::vector<Vec3> one = runEventfulCluster(1, one_counters, size, &one_energies);
+    const std::vector<Vec3> two = runEventfulCluster(2, two_counters, size, &two_energies);
+    omp_set_num_threads(2);
+    REQUIRE(one.size() == 800);
+    INFO("broken " << one_counters.bonds_broken << " contacts " << one_counters.contacts_active
+                   << " wall contacts " << one_counters.wall_contacts_active);
+    CHECK(one_counters.bonds_broken > 0);  // breaking and in contact (the plate: the test above)
+    CHECK(one_counters.contacts_active > 0);
+    CHECK(one_energies.kinetic() > 0.0);
+    CHECK(one_energies.gravity_work != 0.0);
+    CHECK(std::memcmp(one.data(), two.data(), one.size() * sizeof(Vec3)) == 0);
+    CHECK(std::memcmp(&one_energies, &two_energies, sizeof(DemEnergies)) == 0);
     CHECK(one_counters.bonds_broken == two_counters.bonds_broken);
 }
 
