@@ -174,6 +174,12 @@ int runApplication(const AppInfo& info, int argc, char** argv, const std::functi
         return reportUserError(info, e.what());
     } catch (const Interrupted& e) {  // stopped: the message says how to continue
         return reportUserError(info, e.what());
+    } catch (const std::filesystem::filesystem_error& e) {
+        // The case's file system refused (a symbolic link loop, a permission, a full disk):
+        // the path is the case's, not a bug.
+        const std::string message =
+            std::string(e.what()) + "; check that path (links, permissions, free space) and run again";
+        return reportUserError(info, message.c_str());
     } catch (const std::exception& e) {
         std::cout << std::flush;
         std::cerr << info.name << ": internal error: " << e.what()

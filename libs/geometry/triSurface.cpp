@@ -128,6 +128,10 @@ TriSurface readAsciiStl(const std::string& text, const fs::path& file)
 
 TriSurface readStl(const fs::path& file)
 {
+    std::error_code ec;
+    if (fs::is_directory(file, ec))
+        throw UserError("cannot read STL '" + file.string() +
+                        "': it is a directory; give the path of an STL file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw UserError("cannot read STL '" + file.string() + "': no such file or not readable");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

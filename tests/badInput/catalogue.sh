@@ -54,6 +54,10 @@ badCase stlEmpty disc "rock.stl" "empty" meshRock -case . <<SETUP
 $stlDict
 : > constant/triSurface/rock.stl
 SETUP
+badCase stlIsDirectory disc "rock.stl" "it is a directory" meshRock -case . <<SETUP
+$stlDict
+mkdir constant/triSurface/rock.stl
+SETUP
 badCase stlGarbage disc "rock.stl" "" meshRock -case . <<SETUP
 $stlDict
 echo "this is not an stl" > constant/triSurface/rock.stl
@@ -159,6 +163,16 @@ caseDict -case . system/controlDict -entry startTime -set 1e-3
 SETUP
 badCase endBeforeStart demRun "controlDict" "raise endTime" bondedDemFoam -case . <<'SETUP'
 caseDict -case . system/controlDict -entry endTime -set 1e-6
+SETUP
+# Symbolic link loops where the case's directories are: exit 1 naming the path, not exit 2.
+badCase timeDirLinkLoop demRun "0.5" "check that path" bondedDemFoam -case . <<'SETUP'
+ln -s 0.5 0.5
+SETUP
+badCase voronoiMeshLinkLoop dem "voronoiMesh" "" bondedDemFoam -case . <<'SETUP'
+rm -rf constant/voronoiMesh && ln -s voronoiMesh constant/voronoiMesh
+SETUP
+badCase postProcessingLinkLoop dem "postProcessing" "" bondedDemFoam -case . <<'SETUP'
+rm -rf postProcessing && ln -s postProcessing postProcessing
 SETUP
 # More steps than a run can count: was "(-9223372036854775808 steps)" and exit 0.
 badCase endTimeTooManySteps dem "controlDict" "lower endTime or raise deltaT" bondedDemFoam -case . <<'SETUP'
