@@ -92,7 +92,8 @@ Application::Application(const AppInfo& info, int argc, char** argv) : info_(inf
     std::error_code ec;
     if (!std::filesystem::is_directory(case_, ec))
         throw UserError("case directory '" + case_.string() +
-                        "' does not exist; give an existing case with -case <dir>");
+                        (std::filesystem::exists(case_, ec) ? "' is not a directory" : "' does not exist") +
+                        "; give an existing case with -case <dir>");
 }
 
 std::string Application::caseName() const

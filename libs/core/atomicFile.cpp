@@ -50,10 +50,17 @@ void writeFileAtomically(const fs::path& path, const std::function<void(std::ost
     createParent(path);
     const fs::path tmp = temporaryPathFor(path);
     {
+        errno = 0;
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw UserError("cannot write '" + path.string() + "': " + std::strerror(errno) +
+        if (!out) {
+            // The stream need not set errno ("Success"): say what the directory allows.
+            const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+            const std::string reason = errno != 0                         ? std::strerror(errno)
+                                       : ::access(dir.c_str(), W_OK) != 0 ? "its directory is not writable"
+                                                                          : "the file cannot be created";
+            throw UserError("cannot write '" + path.string() + "': " + reason +
                             "; check the permissions of its directory");
+        }
         try {
             writer(out);
         } catch (...) {

@@ -19,6 +19,9 @@ facetFn='facet() { printf "facet normal 0 0 0\nouter loop\nvertex %s\nvertex %s\
 # ---- meshRock: dictionaries ---------------------------------------------------------
 badCase noCaseDir empty "nowhere" "does not exist" meshRock -case nowhere <<'SETUP'
 SETUP
+badCase caseIsAFile empty "notADirectory" "is not a directory" meshRock -case notADirectory <<'SETUP'
+touch notADirectory
+SETUP
 badCase unknownOption disc "-frobnicate" "unknown option" meshRock -case . -frobnicate <<'SETUP'
 SETUP
 badCase noMeshRockDict disc "meshRockDict" "" meshRock -case . <<'SETUP'
@@ -82,6 +85,14 @@ printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nver
 SETUP
 
 # ---- voronoiMesh ----------------------------------------------------------------------
+badCase elementCountNegative femNoMesh "feMeshDict" "elementCount" meshRock -case . <<'SETUP'
+caseDict -case . system/feMeshDict -entry elementSize -remove
+caseDict -case . system/feMeshDict -entry elementCount -add -5
+SETUP
+badCase elementCountFraction femNoMesh "feMeshDict" "whole number" meshRock -case . <<'SETUP'
+caseDict -case . system/feMeshDict -entry elementSize -remove
+caseDict -case . system/feMeshDict -entry elementCount -add 1000.5
+SETUP
 badCase contactRefinementNotFiner femNoMesh "feMeshDict" "below elementSize" meshRock -case . <<'SETUP'
 printf 'contactRefinement { elementSize [m] 10e-3; distance [m] 5e-3; }\n' >> system/feMeshDict
 SETUP

@@ -8,6 +8,7 @@
 //        constant/geometryProperties        volume, centroid, inertia, extents, hull planes
 //        constant/feMesh/specimen.msh       tetrahedra (with feMeshDict)
 //        VTK/specimen.vtp, VTK/feMesh.vtu   for ParaView
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -53,7 +54,13 @@ TetMeshRequest readTetRequest(const Dictionary& d)
 {
     TetMeshRequest r;
     if (d.found("elementSize")) r.elementSize = d.getScalar("elementSize", Bounds::positive());
-    if (d.found("elementCount")) r.elementCount = d.get<int>("elementCount");
+    if (d.found("elementCount")) {
+        const double count = d.getScalar("elementCount", Bounds::closed(1, 2e9));
+        if (count != std::floor(count))
+            throw UserError(d.location("elementCount").str() + ": elementCount must be a whole number (got " +
+                            formatNumber(count) + ")");
+        r.elementCount = static_cast<int>(count);
+    }
     if (r.elementSize > 0 && r.elementCount > 0)
         throw UserError(d.fileName() + ": give either 'elementSize' or 'elementCount', not both");
     if (!(r.elementSize > 0) && r.elementCount <= 0)
