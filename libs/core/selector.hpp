@@ -95,4 +95,8 @@ private:
 void requireKnownEntries(const Dictionary& dict, const std::vector<std::string>& known,
                          const std::string& hint = "");
 
+// The known keyword nearest `word` (case-insensitive edit distance at most max(2, |word| / 4)),
+// or "" when none is that close: the "did you mean" of the messages.
+std::string nearestKeyword(const std::string& word, const std::vector<std::string>& known);
+
 }  // namespace rockfrac

@@ -6,6 +6,7 @@
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/selector.hpp"
 #include "io/foamFile.hpp"
 
 namespace rockfrac {
@@ -105,6 +106,7 @@ void finishHull(Specimen& s)
 
 Specimen buildDisc(const Dictionary& d)
 {
+    requireKnownEntries(d, {"diameter", "thickness", "centre", "nSegments"});
     Specimen s;
     s.kind = Specimen::Kind::disc;
     s.source = "disc";
@@ -124,6 +126,7 @@ Specimen buildDisc(const Dictionary& d)
 
 Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
 {
+    requireKnownEntries(d, {"file", "scale", "rotate", "translate", "placeOnPlate"});
     const std::string fileName = d.get<std::string>("file");
     const fs::path file = fs::path(fileName).is_absolute() ? fs::path(fileName) : caseDir / fileName;
     TriSurface scan = readStl(file);
@@ -150,6 +153,8 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
 
 Specimen buildGenerated(const Dictionary& d)
 {
+    requireKnownEntries(
+        d, {"volume", "elongation", "flatness", "roughness", "nPoints", "roundness", "seed", "placeOnPlate"});
     RockShape shape;
     shape.volume = d.getScalar("volume", Bounds::positive());
     shape.elongation = d.getScalarOrDefault("elongation", shape.elongation, Bounds::open(0, 1.000001));

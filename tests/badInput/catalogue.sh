@@ -45,6 +45,17 @@ SETUP
 badCase diameterNotANumber disc "meshRockDict" "diameter" meshRock -case . <<'SETUP'
 caseDict -case . system/meshRockDict -entry disc/diameter -set big
 SETUP
+# A misspelt entry: refused with the nearest known one (it was silently ignored).
+badCase misspeltDiscEntry disc "meshRockDict" "did you mean 'nSegments'?" meshRock -case . <<'SETUP'
+sed -i 's/nSegments/nSegment/' system/meshRockDict
+SETUP
+badCase misspeltPlaceOnPlate disc "meshRockDict" "did you mean 'placeOnPlate'?" meshRock -case . <<SETUP
+cat > system/meshRockDict <<D
+FoamFile { format ascii; class dictionary; object meshRockDict; }
+geometry generated;
+generated { volume 43.6e-6; seed 107; placeOnPlat yes; }
+D
+SETUP
 badCase unknownGeometry disc "meshRockDict" "sphere" meshRock -case . <<'SETUP'
 caseDict -case . system/meshRockDict -entry geometry -set sphere
 SETUP
