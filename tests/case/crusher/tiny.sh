@@ -32,6 +32,20 @@ awk -v i="$imbalance" -v f="$fed" 'BEGIN { exit !(f > 0 && i != "" && (i < 0 ? -
 power=$(awk '$1 == "powerMean_W" { print $2 }' postProcessing/crusherPost/summary.dat)
 awk -v p="$power" 'BEGIN { exit !(p > 0) }' || fail "mean power $power W is not positive"
 echo "ok: CH660 tiny, fed $fed kg, imbalance $imbalance kg, power $power W"
+# Bands around the documented run (one thread, this tutorial with the free spin): the three rocks'
+# mass exactly as meshed, the mantle's work and mean power within 5 % (full size: 0.014504 J,
+# 0.290017 W, one fragment of 0.0057005 kg discharged; small size: 0.0048439 J, 0.388186 W, none).
+# A change of the contact or bond physics, the feed or the kinematics moves them further.
+mantle_work=$(sed -n 's/^Energy: mantle work \([^ ]*\) J.*/\1/p' log.bondedDemFoam | tail -1)
+discharged=$(echo "$line" | sed -n 's/.*discharged \([^ ]*\) kg.*/\1/p')
+awk -v f="$fed" -v w="$mantle_work" -v p="$power" -v d="$discharged" -v ew="$(bySize 0.014504 0.0048439)" \
+    -v ep="$(bySize 0.290017 0.388186)" -v ed="$(bySize 0.00570052776 0)" 'BEGIN {
+        ok = (f > 0.0142821554 * (1 - 1e-9) && f < 0.0142821554 * (1 + 1e-9)) &&
+             (w > 0.95 * ew && w < 1.05 * ew) && (p > 0.95 * ep && p < 1.05 * ep) &&
+             (d >= 0.99 * ed && d <= 1.01 * ed)
+        exit !ok }' ||
+    fail "moved from the documented run: fed $fed kg, mantle work $mantle_work J, power $power W, discharged $discharged kg"
+echo "ok: in the bands (mantle work $mantle_work J, discharged $discharged kg)"
 
 # The spin's columns, by name: it turned, and drive work = wall work + spin energy + bearing loss.
 # The identity holds by construction (driveWork is written as mantleWork + the spin's torque
