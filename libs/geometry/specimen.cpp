@@ -119,6 +119,10 @@ Specimen buildDisc(const Dictionary& d)
     if (nSegments < 8)
         throw UserError(d.fileName() + ": disc/nSegments = " + std::to_string(nSegments) +
                         " is too coarse; expected at least 8 facets around the disc");
+    if (nSegments > 100000)
+        throw UserError(d.location("nSegments").str() + ": disc/nSegments = " + std::to_string(nSegments) +
+                        " facets is more than the 100000 a display surface needs (the Voronoi mesher fills "
+                        "the exact cylinder); use 128 to 1024");
     s.surface = discSurface(s.diameter, s.thickness, s.centre, nSegments);
     s.properties = discProperties(s.diameter, s.thickness, s.centre);
     return s;

@@ -132,6 +132,9 @@ TriSurface readStl(const fs::path& file)
     if (fs::is_directory(file, ec))
         throw UserError("cannot read STL '" + file.string() +
                         "': it is a directory; give the path of an STL file");
+    if (fs::exists(file, ec) && !fs::is_regular_file(file, ec))
+        throw UserError("cannot read STL '" + file.string() +
+                        "': not a regular file (a device or a pipe); give the path of an STL file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw UserError("cannot read STL '" + file.string() + "': no such file or not readable");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -56,6 +56,20 @@ geometry generated;
 generated { volume 43.6e-6; seed 107; placeOnPlat yes; }
 D
 SETUP
+badCase nSegmentsHuge disc "meshRockDict" "nSegments" meshRock -case . <<'SETUP'
+caseDict -case . system/meshRockDict -entry disc/nSegments -set 1000000000
+SETUP
+badCase elementSizeTiny femNoMesh "elementSize" "needs an estimated" meshRock -case . <<'SETUP'
+caseDict -case . system/feMeshDict -entry elementSize -set 1e-5
+SETUP
+badCase elementCountHuge femNoMesh "elementCount" "needs an estimated" meshRock -case . <<'SETUP'
+caseDict -case . system/feMeshDict -entry elementSize -remove
+caseDict -case . system/feMeshDict -entry elementCount -add 2e9
+SETUP
+badCase nCellsHuge meshed "nCells" "needs an estimated" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry nCells -set 1000000000
+caseDict -case . system/voronoiMeshDict -entry pruningDistance -set 0
+SETUP
 badCase unknownGeometry disc "meshRockDict" "sphere" meshRock -case . <<'SETUP'
 caseDict -case . system/meshRockDict -entry geometry -set sphere
 SETUP
@@ -71,6 +85,10 @@ SETUP
 badCase stlIsDirectory disc "rock.stl" "it is a directory" meshRock -case . <<SETUP
 $stlDict
 mkdir constant/triSurface/rock.stl
+SETUP
+badCase stlIsADevice disc "rock.stl" "not a regular file" meshRock -case . <<SETUP
+$stlDict
+ln -s /dev/urandom constant/triSurface/rock.stl
 SETUP
 badCase stlGarbage disc "rock.stl" "" meshRock -case . <<SETUP
 $stlDict

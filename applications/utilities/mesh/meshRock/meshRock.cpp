@@ -8,12 +8,14 @@
 //        constant/geometryProperties        volume, centroid, inertia, extents, hull planes
 //        constant/feMesh/specimen.msh       tetrahedra (with feMeshDict)
 //        VTK/specimen.vtp, VTK/feMesh.vtu   for ParaView
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
+#include "core/memoryLimit.hpp"
 #include "geometry/specimen.hpp"
 #include "geometry/tetMesher.hpp"
 #include "io/vtkOutput.hpp"
@@ -116,6 +118,17 @@ int main(int argc, char** argv)
         std::optional<TetMeshRequest> tetRequest;
         if (fs::exists(app.path("system/feMeshDict")))
             tetRequest = readTetRequest(Dictionary::readFile(app.path("system/feMeshDict")));
+        if (tetRequest) {
+            // A regular tetrahedron of edge a has volume a^3 / (6 sqrt 2). Measured: 100 281
+            // tetrahedra peak at 119 MB (1.2 kB each, gmsh included).
+            const double tets = tetRequest->elementCount > 0
+                                    ? tetRequest->elementCount
+                                    : specimen.properties.volume * 6.0 * std::sqrt(2.0) /
+                                          std::pow(tetRequest->elementSize, 3);
+            checkMemoryFits(static_cast<std::uint64_t>(std::min(tets, 1e15) * 1500.0),
+                            "system/feMeshDict: about " + formatNumber(std::round(tets)) + " tetrahedra",
+                            "raise elementSize (or lower elementCount) in system/feMeshDict");
+        }
         report(specimen);
         if (app.dryRun()) {
             std::printf("Dry run: inputs are valid, nothing written.\n");
