@@ -30,6 +30,7 @@ int fuzzStl(const std::uint8_t* data, std::size_t size);
 int fuzzStateFile(const std::uint8_t* data, std::size_t size);
 int fuzzVoronoiMesh(const std::uint8_t* data, std::size_t size);
 int fuzzMeasurements(const std::uint8_t* data, std::size_t size);
+int fuzzDictionary(const std::uint8_t* data, std::size_t size);
 
 // A scratch directory private to this process (under /dev/shm when it exists,
 // so the targets that must go through files do not wear the disk), created on

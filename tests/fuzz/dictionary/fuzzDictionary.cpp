@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "../common/fuzzTarget.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 
@@ -42,14 +43,20 @@ void exerciseEditor(const std::string& text, const rockfrac::Dictionary& dict)
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+namespace rockfrac::fuzz {
+
+int fuzzDictionary(const std::uint8_t* data, std::size_t size)
 {
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
-        const rockfrac::Dictionary dict = rockfrac::Dictionary::parse(text, "fuzz", fuzzLimits());
+        const Dictionary dict = Dictionary::parse(text, "fuzz", fuzzLimits());
         checkRoundTrip(dict);
         exerciseEditor(text, dict);
-    } catch (const rockfrac::UserError&) {
+    } catch (const UserError&) {
     }
     return 0;
 }
+
+}  // namespace rockfrac::fuzz
+
+ROCKFRAC_FUZZ_ENTRY(rockfrac::fuzz::fuzzDictionary)

@@ -54,3 +54,9 @@ TEST_CASE("saved measurements fuzz inputs read or give a UserError", "[fuzz][sta
 {
     CHECK(replay("measurements", rockfrac::fuzz::fuzzMeasurements) > 0);
 }
+
+TEST_CASE("saved dictionary fuzz inputs parse, round-trip and edit, or give a UserError",
+          "[fuzz][dictionary]")
+{
+    CHECK(replay("dictionary", rockfrac::fuzz::fuzzDictionary) >= 6);
+}
