@@ -249,7 +249,13 @@ Specimen readSpecimen(const fs::path& caseDir)
         s.hullToScanVolume = hull.getOrDefault<double>("hullToScanVolume", 1.0);
         for (const auto& row : hull.get<std::vector<std::vector<double>>>("planes")) {
             if (row.size() != 4) throw UserError(file.string() + ": each plane needs 4 values (nx ny nz c)");
-            s.planes.push_back({normalised(Vec3{row[0], row[1], row[2]}), row[3]});
+            const Vec3 normal{row[0], row[1], row[2]};
+            if (!(norm(normal) > 0) || !std::isfinite(norm(normal)) || !std::isfinite(row[3]))
+                throw UserError(
+                    hull.location("planes").str() + ": convexHull/planes: plane " +
+                    std::to_string(s.planes.size()) +
+                    " has a zero or non-finite normal; run meshRock again to remake the specimen");
+            s.planes.push_back({normalised(normal), row[3]});
         }
         if (s.planes.size() < 4) throw UserError(file.string() + ": a convex hull needs at least 4 planes");
     }

@@ -66,6 +66,10 @@ badCase elementCountHuge femNoMesh "elementCount" "needs an estimated" meshRock 
 caseDict -case . system/feMeshDict -entry elementSize -remove
 caseDict -case . system/feMeshDict -entry elementCount -add 2e9
 SETUP
+badCase mesoConstantTiny meshed "voronoiMeshDict" "mesoConstant" voronoiMesh -case . <<'SETUP'
+caseDict -case . system/voronoiMeshDict -entry nCells -remove
+caseDict -case . system/voronoiMeshDict -entry mesoConstant -add 1e-30
+SETUP
 badCase nCellsHuge meshed "nCells" "needs an estimated" voronoiMesh -case . <<'SETUP'
 caseDict -case . system/voronoiMeshDict -entry nCells -set 1000000000
 caseDict -case . system/voronoiMeshDict -entry pruningDistance -set 0
@@ -142,6 +146,15 @@ caseDict -case . system/voronoiMeshDict -entry pruningDistance -set 3.5e-3
 SETUP
 badCase unknownCellOrder meshed "voronoiMeshDict" "cellOrder" voronoiMesh -case . <<'SETUP'
 caseDict -case . system/voronoiMeshDict -entry cellOrder -add hilbert
+SETUP
+badCase hullZeroNormal meshed "geometryProperties" "zero or non-finite normal" voronoiMesh -case . <<'SETUP'
+cat > constant/geometryProperties <<D
+FoamFile { format ascii; class dictionary; object geometryProperties; }
+type convexHull; source generated; volume 1e-6; centroid (0 0 0);
+inertia (1e-12 0 0 0 1e-12 0 0 0 1e-12); principalExtents (0.01 0.01 0.01);
+boundsMin (-0.005 -0.005 -0.005); boundsMax (0.005 0.005 0.005);
+convexHull { planes ( (0 0 0 1) (1 0 0 0.005) (0 1 0 0.005) (0 0 1 0.005) ); }
+D
 SETUP
 badCase geometryPropertiesTruncated meshed "geometryProperties" "" voronoiMesh -case . <<'SETUP'
 head -c 300 constant/geometryProperties > g && mv g constant/geometryProperties

@@ -10,6 +10,7 @@
 
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
+#include "core/error.hpp"
 #include "core/memoryLimit.hpp"
 #include "geometry/specimen.hpp"
 #include "io/vtkOutput.hpp"
@@ -50,7 +51,13 @@ MeshRequest readRequest(const Dictionary& d, double domainVolume)
     if (d.found("nCells")) {
         r.nCells = d.get<int>("nCells");
     } else {
-        r.nCells = cellCountFromMesoConstant(domainVolume, d.getScalar("mesoConstant", Bounds::positive()));
+        const double meso = d.getScalar("mesoConstant", Bounds::positive());
+        try {
+            r.nCells = cellCountFromMesoConstant(domainVolume, meso);
+        } catch (const UserError& e) {
+            throw UserError(d.location("mesoConstant").str() + ": mesoConstant " + formatNumber(meso) +
+                            " m^3 in " + formatNumber(domainVolume) + " m^3: " + e.what());
+        }
     }
     if (r.nCells < 2)
         throw UserError(d.fileName() + ": " + std::to_string(r.nCells) +
