@@ -55,7 +55,8 @@ TimeControl::TimeControl(const Dictionary& d, const fs::path& caseDir) : case_(c
     writePrecision_ = d.getOrDefault<int>("writePrecision", 8);
     // A double has 17 significant digits; longer names only cut time directories short.
     if (writePrecision_ < 1 || writePrecision_ > 17)
-        throw UserError(d.location("writePrecision").str() + ": writePrecision " + std::to_string(writePrecision_) +
+        throw UserError(d.location("writePrecision").str() + ": writePrecision " +
+                        std::to_string(writePrecision_) +
                         " is outside [1, 17] (a time has at most 17 significant digits); use 8 to 17");
     if (d.found("stopAt")) d.getWord("stopAt", {"endTime", "writeNow"});
 
@@ -87,8 +88,8 @@ long TimeControl::stepOf(double time) const
     constexpr double maxSteps = 1e15;
     const double steps = time / deltaT_;
     if (!(steps <= maxSteps))
-        throw UserError((case_ / "system/controlDict").string() + ": time " + timeName(time) +
-                        " s is " + formatNumber(steps) + " steps of " + formatNumber(deltaT_) +
+        throw UserError((case_ / "system/controlDict").string() + ": time " + timeName(time) + " s is " +
+                        formatNumber(steps) + " steps of " + formatNumber(deltaT_) +
                         " s, more than the 1e15 a run can count; lower endTime or raise deltaT");
     return static_cast<long>(std::llround(steps));
 }

@@ -173,7 +173,7 @@ void writeFragmentVtu(const fs::path& file, const VoronoiMesh& mesh, const Fragm
     cells.points = analysis.vertices;
     cells.cellFaceOffset = mesh.cellFaceOffset;
     cells.faceVertexOffset = mesh.faceVertexOffset;
-    cells.faceVertices.resize(mesh.faceVertices.size());
+    cells.faceVertices = mesh.globalFaceVertices();
     const int n = mesh.nCells();
     std::vector<int> ids(n), fragment_cells(n);
     std::vector<double> fragment_mass(n);
@@ -182,9 +182,6 @@ void writeFragmentVtu(const fs::path& file, const VoronoiMesh& mesh, const Fragm
         const Fragment& f = analysis.fragments[analysis.labels.fragment_of_cell[c]];
         fragment_cells[c] = f.n_cells;
         fragment_mass[c] = f.mass;
-        for (int face = mesh.cellFaceOffset[c]; face < mesh.cellFaceOffset[c + 1]; ++face)
-            for (int k = mesh.faceVertexOffset[face]; k < mesh.faceVertexOffset[face + 1]; ++k)
-                cells.faceVertices[k] = mesh.cellVertexOffset[c] + mesh.faceVertices[k];
     }
     writePolyhedraVtu(
         file, cells,

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <map>
 #include <set>
-#include <unordered_map>
 
 #include "core/error.hpp"
 #include "parallel/rcb.hpp"
@@ -45,7 +44,6 @@ DecomposeParameters readDecomposeParameters(const Dictionary& dict)
 {
     requireKnownEntries(dict, {"numberOfSubdomains", "method", "weights", "rcb"});
     DecomposeParameters p;
-    p.file = dict.fileName();
     const double n = dict.getScalar("numberOfSubdomains", Bounds::closed(1, 1 << 20));
     if (n != std::floor(n))
         throw UserError(dict.location("numberOfSubdomains").str() +
@@ -73,16 +71,12 @@ HaloReport haloReport(const std::vector<Vec3>& centroids, const std::vector<doub
     const int n = static_cast<int>(centroids.size());
     HaloReport r;
     r.subdomains.assign(n_parts, {});
-    for (int i = 0; i < n; ++i) {
-        r.subdomains[part_of[i]].cells += 1;
-        r.subdomains[part_of[i]].weight += weights[i];
+    const PartBalance balance = partBalance(part_of, weights, n_parts);
+    for (int p = 0; p < n_parts; ++p) {
+        r.subdomains[p].cells = balance.items[p];
+        r.subdomains[p].weight = balance.weight[p];
     }
-    double total = 0.0, largest = 0.0;
-    for (const SubdomainHalo& s : r.subdomains) {
-        total += s.weight;
-        largest = std::max(largest, s.weight);
-    }
-    r.imbalance = total > 0.0 ? largest / (total / n_parts) - 1.0 : 0.0;
+    r.imbalance = balance.imbalance;
 
     for (const auto& [a, b] : interfaces)
         if (part_of[a] != part_of[b]) {

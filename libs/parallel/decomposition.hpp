@@ -35,7 +35,6 @@ struct DecomposeParameters {
     int n_subdomains = 1;
     std::shared_ptr<const DecompositionMethod> method;
     bool cost_weights = true;  // weights cost (true) or uniform (false)
-    std::string file;          // the dictionary's path, for messages
 };
 
 // Reads and checks <case>/system/decomposeParDict; a UserError naming the file and line of

@@ -66,6 +66,18 @@ struct VoronoiMesh {
     int nCells() const { return static_cast<int>(volumes.size()); }
     int nFaces() const { return static_cast<int>(faceNeighbour.size()); }
     int nBonds() const { return static_cast<int>(bonds.size()); }
+
+    // faceVertices as indices into `vertices` (each cell's own range): the face lists of the
+    // cells as polyhedra over all the mesh's vertices, as VTK writes them.
+    std::vector<int> globalFaceVertices() const
+    {
+        std::vector<int> global(faceVertices.size());
+        for (int c = 0; c < nCells(); ++c)
+            for (int f = cellFaceOffset[c]; f < cellFaceOffset[c + 1]; ++f)
+                for (int k = faceVertexOffset[f]; k < faceVertexOffset[f + 1]; ++k)
+                    global[k] = cellVertexOffset[c] + faceVertices[k];
+        return global;
+    }
 };
 
 }  // namespace rockfrac

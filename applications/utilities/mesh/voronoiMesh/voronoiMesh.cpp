@@ -84,16 +84,13 @@ void writeVtk(const Application& app, const VoronoiMesh& mesh)
     cells.points = mesh.vertices;
     cells.cellFaceOffset = mesh.cellFaceOffset;
     cells.faceVertexOffset = mesh.faceVertexOffset;
-    cells.faceVertices.resize(mesh.faceVertices.size());
+    cells.faceVertices = mesh.globalFaceVertices();
     std::vector<double> neighbours(mesh.nCells());
     std::vector<int> ids(mesh.nCells());
     for (int c = 0; c < mesh.nCells(); ++c) {
         ids[c] = c;
-        for (int f = mesh.cellFaceOffset[c]; f < mesh.cellFaceOffset[c + 1]; ++f) {
+        for (int f = mesh.cellFaceOffset[c]; f < mesh.cellFaceOffset[c + 1]; ++f)
             if (mesh.faceNeighbour[f] >= 0) neighbours[c] += 1;
-            for (int k = mesh.faceVertexOffset[f]; k < mesh.faceVertexOffset[f + 1]; ++k)
-                cells.faceVertices[k] = mesh.cellVertexOffset[c] + mesh.faceVertices[k];
-        }
     }
     writePolyhedraVtu(app.path("VTK/voronoiMesh.vtu"), cells,
                       {Field::integer("cellId", ids), Field::scalar("volume", mesh.volumes),

@@ -136,11 +136,7 @@ int main(int argc, char** argv)
             cells.points = mesh.vertices;
             cells.cellFaceOffset = mesh.cellFaceOffset;
             cells.faceVertexOffset = mesh.faceVertexOffset;
-            cells.faceVertices.resize(mesh.faceVertices.size());
-            for (int c = 0; c < n; ++c)
-                for (int f = mesh.cellFaceOffset[c]; f < mesh.cellFaceOffset[c + 1]; ++f)
-                    for (int k = mesh.faceVertexOffset[f]; k < mesh.faceVertexOffset[f + 1]; ++k)
-                        cells.faceVertices[k] = mesh.cellVertexOffset[c] + mesh.faceVertices[k];
+            cells.faceVertices = mesh.globalFaceVertices();
             writePolyhedraVtu(app.path("VTK/decomposition.vtu"), cells,
                               {Field::integer("processor", part_of), Field::scalar("weight", weights)}, 0.0);
             written += ", VTK/decomposition.vtu";
