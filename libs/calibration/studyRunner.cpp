@@ -202,7 +202,7 @@ void prepareTemplate(const CalibrationStudy& study)
                             std::to_string(status) + " in '" + dir.string() +
                             "': " + lastLine(dir / "log.prepare"));
     }
-    std::ofstream(stamp) << "prepared\n";
+    writeFileAtomically(stamp, [](std::ostream& out) { out << "prepared\n"; });
 }
 
 std::vector<MemberRun> runSet(const CalibrationStudy& study, const RunSet& set, int jobs)

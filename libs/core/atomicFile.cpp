@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/faultPoint.hpp"
 
 namespace rockfrac {
 
@@ -70,14 +71,19 @@ void writeFileAtomically(const fs::path& path, const std::function<void(std::ost
             throw;
         }
         out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ec;
+        const std::streamoff written = out ? static_cast<std::streamoff>(out.tellp()) : -1;
+        out.close();
+        // The stream's state after flush and close, and the size the file system reports:
+        // a short write on a full disk is caught here, before the rename.
+        std::error_code ec;
+        const auto size = fs::file_size(tmp, ec);
+        if (!out || written < 0 || ec || static_cast<std::streamoff>(size) != written) {
             fs::remove(tmp, ec);
             throw UserError("cannot write '" + path.string() +
                             "' (disk full or I/O error); the previous version of the file is kept");
         }
     }
+    faultPoint("beforeRename");
     renameOver(tmp, path);
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/faultPoint.hpp"
 
 namespace rockfrac {
 
@@ -140,6 +141,7 @@ fs::path TimeControl::prepareStagingDir(double time) const
                         ec.message() +
                         "); check the free space and permissions of the case; the last complete time is " +
                         latestTimeName());
+    faultPoint("staged");
     return staging;
 }
 
@@ -157,6 +159,7 @@ void TimeControl::writeTimeDir(double time, const std::function<void(const fs::p
 
 void TimeControl::commitTimeDir(double time)
 {
+    faultPoint("beforeCommit");
     const fs::path staging = stagingDir(time), final = case_ / timeName(time);
     std::error_code ec;
     if (fs::exists(final)) {

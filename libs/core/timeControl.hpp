@@ -51,9 +51,10 @@ public:
     // made (read-only case, disk full): the previous time directories are kept.
     std::filesystem::path prepareStagingDir(double time) const;
     // Publish a filled staging dir as "<case>/<time>" (replacing an old one) and
-    // purge old time directories when purgeWrite > 0.
+    // purge old time directories when purgeWrite > 0. The solvers write the state into the
+    // staging dir and their VTK frames before publishing: a time directory has its frames.
     void commitTimeDir(double time);
-    // The three together: `fill` writes the state's files into the staging dir it is given.
+    // prepareStagingDir, `fill` (writes the files into the staging dir it is given), commit.
     void writeTimeDir(double time, const std::function<void(const std::filesystem::path&)>& fill);
     // Name of the newest complete time directory of the case, "none" without one.
     std::string latestTimeName() const;

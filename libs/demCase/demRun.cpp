@@ -124,10 +124,12 @@ public:
     void writeTime(long step) override
     {
         backend->download();  // the cell arrays from the device
-        runTime.writeTimeDir(model->time(), [&](const fs::path& dir) {
-            writeDemState(dir / "demState", *model, step, peakForce, loadingStarted);
-        });
+        // State, then frames, then the time directory is published: a run killed before the
+        // commit restarts from the previous time, which writes these frames again.
+        const fs::path staging = runTime.prepareStagingDir(model->time());
+        writeDemState(staging / "demState", *model, step, peakForce, loadingStarted);
         writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
+        runTime.commitTimeDir(model->time());
     }
 
     std::string writeFailure(long step) override

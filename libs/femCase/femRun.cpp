@@ -104,9 +104,11 @@ public:
     void writeTime(long step) override
     {
         run.step = step;
-        runTime.writeTimeDir(model->time(),
-                             [&](const fs::path& dir) { writeFemState(dir / "femState", *model, run); });
+        // State, then frames, then the time directory is published (see demRun.cpp).
+        const fs::path staging = runTime.prepareStagingDir(model->time());
+        writeFemState(staging / "femState", *model, run);
         writeFemVtk(app.casePath(), step, *model, restarted || step > 0);
+        runTime.commitTimeDir(model->time());
     }
 
     std::string writeFailure(long step) override

@@ -101,20 +101,23 @@ void addTimeValue(vtkDataObject* data, double timeValue)
 template <class Writer, class Data>
 void writeXml(const fs::path& file, Data* data)
 {
-    writeViaTemporary(file, [&](const fs::path& tmp) {
-        vtkNew<Writer> writer;
-        writer->SetFileName(tmp.string().c_str());
-        writer->SetInputData(data);
-        writer->SetDataModeToAppended();
-        writer->EncodeAppendedDataOff();
-        writer->SetCompressorTypeToZLib();
-        // A failed write (disk full, permissions) is reported by writeViaTemporary in
-        // one line; VTK's own error messages would add several more to stderr.
-        const int warnings = vtkObject::GetGlobalWarningDisplay();
-        vtkObject::GlobalWarningDisplayOff();
-        const bool written = writer->Write() == 1;
-        vtkObject::SetGlobalWarningDisplay(warnings);
-        return written;
+    // VTK's writers report success even when their own file stream was cut short (a full
+    // disk left a torn 16 kB frame): VTK writes to memory, and the bytes go to disk through
+    // writeFileAtomically, which checks the stream and the written size before the rename.
+    vtkNew<Writer> writer;
+    writer->WriteToOutputStringOn();
+    writer->SetInputData(data);
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToZLib();
+    const int warnings = vtkObject::GetGlobalWarningDisplay();
+    vtkObject::GlobalWarningDisplayOff();
+    const bool written = writer->Write() == 1;
+    vtkObject::SetGlobalWarningDisplay(warnings);
+    if (!written) throw UserError("cannot write '" + file.string() + "': VTK could not encode the data");
+    const std::string bytes = writer->GetOutputString();
+    writeFileAtomically(file, [&](std::ostream& out) {
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     });
 }
 

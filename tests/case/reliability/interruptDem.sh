@@ -2,8 +2,10 @@
 # bondedDemFoam interrupted: SIGTERM (exit 143) and SIGINT (exit 130) write the
 # state at the current step as a complete time directory, and `startFrom
 # latestTime` continues to a plateForce.dat bitwise identical to the
-# uninterrupted run's; SIGKILL at random moments leaves only complete time
-# directories and the continuation is still bitwise identical.
+# uninterrupted run's; SIGKILL ten times (at random moments and at the fault
+# points of a time directory's creation, libs/core/faultPoint.hpp) leaves only
+# complete time directories and whole VTK files, and the continuation's
+# plateForce.dat and every VTK frame are bitwise the uninterrupted run's.
 source "$(dirname "$0")/../caseTestFunctions"
 source "$(dirname "$0")/interruptFunctions"
 solver=bondedDemFoam state=demState base="$work/base"
@@ -15,4 +17,4 @@ caseDict -case "$base" system/controlDict -entry writeInterval -set "$(bySize 5e
 reference
 interruptWith TERM 143
 interruptWith INT 130
-killRepeatedly "$(bySize 4 2)"
+killRepeatedly "$(bySize 10 4)"

@@ -14,4 +14,4 @@ caseDict -case "$base" system/controlDict -entry writeInterval -set "$(bySize 1e
 reference
 interruptWith TERM 143
 interruptWith INT 130
-killRepeatedly "$(bySize 4 2)"
+killRepeatedly "$(bySize 6 4)"

@@ -62,8 +62,20 @@ grep -q "disk full\|No space left" "$work/full.err" || fail "the message does no
 latest=$(cd "$full" && ls -d [0-9]* | sort -g | tail -1)
 [ -s "$full/$latest/demState" ] || fail "the last time directory $latest is not complete"
 for t in $(cd "$full" && ls -d [0-9]*); do [ -s "$full/$t/demState" ] || fail "partial time directory $t"; done
+# Every VTK file is whole (VTK's writer reported success on a cut-short file, which was then
+# renamed into place: a torn 16 kB frame).
+wholeFrames()
+{
+    local f
+    for f in "$1"/VTK/*.vtu "$1"/VTK/*.vtp; do
+        [ -e "$f" ] || continue
+        tail -c 16 "$f" | grep -q '</VTKFile>' || fail "torn VTK file $f"
+    done
+}
+wholeFrames "$full"
 # The kept state is good: with room again, the run continues from it.
 mkdir -p "$work/roomy" && cp -r "$full/." "$work/roomy"
 (cd "$work/roomy" && bondedDemFoam > log.roomy 2>&1) || fail "continuing from $latest failed: $(tail -3 "$work/roomy/log.roomy")"
 [ "$latest" = 0 ] || grep -q "Restart from time $latest" "$work/roomy/log.roomy" || fail "did not continue from $latest"
+wholeFrames "$work/roomy"
 echo "ok: disk full at a write after $latest: one line, $latest kept and continued"

@@ -1,4 +1,5 @@
 // VTK output is read back with VTK's own XML readers (what ParaView uses).
+#include <sys/resource.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -10,9 +11,12 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "io/vtkOutput.hpp"
 
 using namespace rockfrac;
@@ -124,4 +128,46 @@ TEST_CASE("series file continues after a restart", "[io]")
     std::stringstream text;
     text << in.rdbuf();
     CHECK_THAT(text.str(), Catch::Contains("\"file-series-version\""));
+}
+
+// A full disk, imitated by the file-size limit (writes beyond it fail with EFBIG): VTK's own
+// writer reported success and left a torn frame; the frame is refused and the old one kept.
+TEST_CASE("a frame cut short by a full disk is refused and the previous frame kept", "[io][reliability]")
+{
+    const fs::path file = scratch("short.vtp");
+    std::vector<Vec3> small = {{0, 0, 0}, {1, 0, 0}};
+    writeLinesVtp(file, small, {{0, 1}}, {}, {}, 0.0);
+    const auto before = fs::file_size(file);
+    std::vector<Vec3> points(20000);
+    std::vector<std::array<int, 2>> lines;
+    for (int i = 0; i < 20000; ++i) points[i] = {std::sin(i * 1.1), std::cos(i * 0.7), 1e-3 * i};
+    for (int i = 0; i + 1 < 20000; i += 2) lines.push_back({i, i + 1});
+
+    struct rlimit old {};
+    REQUIRE(getrlimit(RLIMIT_FSIZE, &old) == 0);
+    struct rlimit limit = old;
+    limit.rlim_cur = 8192;
+    void (*oldHandler)(int) = std::signal(SIGXFSZ, SIG_IGN);
+    REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
+    bool refused = false;
+    std::string message;
+    try {
+        writeLinesVtp(file, points, lines, {}, {}, 1.0);
+    } catch (const UserError& e) {
+        refused = true;
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldHandler);
+    CHECK(refused);
+    CHECK(message.find("disk full") != std::string::npos);
+    CHECK(fs::file_size(file) == before);  // the previous, complete frame
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(file.string().c_str());
+    reader->Update();
+    CHECK(reader->GetOutput()->GetNumberOfLines() == 1);
+    int leftovers = 0;
+    for (const auto& e : fs::directory_iterator(file.parent_path()))
+        if (e.path().filename().string().rfind(".tmp.", 0) == 0) ++leftovers;
+    CHECK(leftovers == 0);
 }

@@ -27,6 +27,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtkXMLPolyDataReader.h>
@@ -286,22 +287,23 @@ int main(int argc, char** argv)
         vtkNew<vtkWindowToImageFilter> image;
         image->SetInput(window);
         image->Update();
-        writeViaTemporary(out, [&](const fs::path& tmp) {
-            vtkNew<vtkPNGWriter> writer;
-            writer->SetFileName(tmp.string().c_str());
-            writer->SetInputConnection(image->GetOutputPort());
-            writer->Write();
-            return fs::exists(tmp) && fs::file_size(tmp) > 0;
+        // The PNG is encoded in memory and written through the checked atomic path.
+        vtkNew<vtkPNGWriter> writer;
+        writer->WriteToMemoryOn();
+        writer->SetInputConnection(image->GetOutputPort());
+        writer->Write();
+        vtkUnsignedCharArray* png = writer->GetResult();
+        if (!png || png->GetNumberOfValues() == 0)
+            throw UserError("cannot encode '" + out.string() + "' as PNG");
+        writeFileAtomically(out, [&](std::ostream& file) {
+            file.write(reinterpret_cast<const char*>(png->GetPointer(0)),
+                       static_cast<std::streamsize>(png->GetNumberOfValues()));
         });
         std::printf("renderVtk: %s\n", out.string().c_str());
         if (!app.has("-noState")) {
             const fs::path state = out.parent_path() / (out.stem().string() + "-paraview.py");
             const std::string text = paraviewState(picture, camera);
-            writeViaTemporary(state, [&](const fs::path& tmp) {
-                std::ofstream file(tmp);
-                file << text;
-                return static_cast<bool>(file);
-            });
+            writeFileAtomically(state, [&](std::ostream& file) { file << text; });
             std::printf("renderVtk: %s (ParaView state: File > Load State)\n", state.string().c_str());
         }
         return 0;
