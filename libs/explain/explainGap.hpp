@@ -25,7 +25,11 @@ const char* verdictName(Verdict v);
 struct ScreenedEffect {
     std::string name;
     bool screened = true;  // false: its probe's runs failed, so it was not tested
-    double score = 0.0;    // chi-square reduction of the linearised fit
+    // false: its probe moved no feature by 0.01 standard errors (a zero signature on these
+    // data: plate friction on discs), so the data cannot test it; listed, never screened
+    bool testable = true;
+    double largestChange = 0.0;  // its probe's largest feature change [standard errors]
+    double score = 0.0;          // chi-square reduction of the linearised fit
     double pValue = 1.0;
     double amplitude = 0.0;                        // linearised estimate of the parameter change
     bool wrongSign = false;                        // the data want it outside its physical bounds

@@ -122,17 +122,21 @@ void Analysis::writeScreeningTable(const ExplainOutcome& out) const
 {
     const fs::path dir = s_.directory;
     TextTable screen;
-    screen.names = {"effect", "score",  "p",          "linearisedChange", "refitted", "value",
-                    "low90",  "high90", "heldOutGap", "reduction",        "AIC",      "kept"};
-    screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
-    for (const auto& se : out.screened)
+    screen.names = {"effect",    "status", "score", "p",      "linearisedChange",
+                    "refitted",  "value",  "low90", "high90", "heldOutGap",
+                    "reduction", "AIC",    "kept"};
+    screen.units = {"-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-"};
+    for (const auto& se : out.screened) {
+        const bool tested = se.screened && se.testable;
         screen.rows.push_back(
-            {se.name, se.screened ? format(se.score, 4) : "-", se.screened ? format(se.pValue, 3) : "-",
-             se.screened ? format(se.amplitude, 4) : "-", se.confirmed ? "yes" : "no",
+            {se.name, !se.screened ? "probeFailed" : (se.testable ? "screened" : "notTestable"),
+             tested ? format(se.score, 4) : "-", tested ? format(se.pValue, 3) : "-",
+             tested ? format(se.amplitude, 4) : "-", se.confirmed ? "yes" : "no",
              se.confirmed ? format(se.value, 4) : "-", se.confirmed ? format(se.intervalLow, 4) : "-",
              se.confirmed ? format(se.intervalHigh, 4) : "-", se.confirmed ? format(se.heldOutGap, 3) : "-",
              se.confirmed ? format(se.reduction, 3) : "-", se.confirmed ? format(se.aic, 4) : "-",
              se.kept ? "yes" : "no"});
+    }
     writeTextTable(dir / "screening.dat", screen);
 }
 

@@ -124,6 +124,10 @@ Analysis::Fit Analysis::refitBaseline(ExplainOutcome& out, std::string& fitted)
     return baseline;
 }
 
+// An effect whose probe moves no feature by this many standard errors has no signature on
+// the data (plate friction on discs: exactly zero) and cannot be tested.
+constexpr double untestableChange = 0.01;
+
 // 4. Score test of every effect at the re-fitted baseline: fills out.screened, and
 // `projected` with each effect's whitened signature, the baseline projected out.
 // Returns the effects by decreasing score.
@@ -144,7 +148,13 @@ std::vector<int> Analysis::screenEffects(const Fit& baseline, ExplainOutcome& ou
         const Eigen::VectorXd b = projector * whitened({nb_ + e}).col(0);
         projected.push_back(b);
         const double bb = b.squaredNorm();
-        if (bb > 1e-12) {
+        const int j = nb_ + e;
+        for (std::size_t i = 0; i < obs_.size(); ++i)
+            se.largestChange =
+                std::max(se.largestChange, std::abs(jacobian_(row(obs_[i]), j) *
+                                                    probeSize_[static_cast<std::size_t>(j)] / sigmaCal_[i]));
+        se.testable = !se.screened || se.largestChange >= untestableChange;
+        if (se.screened && se.testable && bb > 1e-12) {
             se.amplitude = b.dot(r) / bb;
             se.score = b.dot(r) * b.dot(r) / bb;
             const double target = d.neutral + se.amplitude;
@@ -164,6 +174,12 @@ std::vector<int> Analysis::screenEffects(const Fit& baseline, ExplainOutcome& ou
         const auto& se = out.screened[static_cast<std::size_t>(e)];
         if (!se.screened) {
             say("  screen " + se.name + ": not screened, its probe failed");
+            continue;
+        }
+        if (!se.testable) {
+            say("  screen " + se.name +
+                ": not testable on these data, its probe moved no feature (largest change " +
+                format(se.largestChange, 2) + " standard errors)");
             continue;
         }
         say("  screen " + se.name + ": score " + format(se.score, 3) + ", p = " + format(se.pValue, 3) +

@@ -28,6 +28,11 @@ int Analysis::decideVerdict(const std::vector<int>& candidates, ExplainOutcome& 
         for (const auto& se : out.screened)
             if (!se.screened) unscreened += (unscreened.empty() ? "" : ", ") + se.name;
         if (!unscreened.empty()) out.sentence += " (Not screened, their probes failed: " + unscreened + ".)";
+        std::string untestable;
+        for (const auto& se : out.screened)
+            if (se.screened && !se.testable) untestable += (untestable.empty() ? "" : ", ") + se.name;
+        if (!untestable.empty())
+            out.sentence += " (Not testable on these data, no signature: " + untestable + ".)";
         return -1;
     }
     const int top = kept.front();

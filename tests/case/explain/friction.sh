@@ -13,4 +13,7 @@ source "$(dirname "$0")/scenarioFunctions"
 smallSizePlates spb
 MODEL=spb EFFECTS=$(bySize "contactCrumbling machineCompliance plateFriction" "contactCrumbling plateFriction") \
     scenario friction "plateFriction { frictionFactor 0.05; }" explained plateFriction
+# On the rock the plate friction has a signature: screened (on discs it is notTestable, twins.sh).
+awk -F'\t' '$1 == "plateFriction" { found = 1; if ($2 != "screened") exit 1 } END { exit !found }' \
+    friction/study/screening.dat || fail "friction: plateFriction not screened on the rock"
 echo "PASS"

@@ -63,6 +63,12 @@ if [ "$caseSize" = small ]; then  # the fixed-baseline fit and the features opti
     exit 0
 fi
 scenario none       ""                                                    noGapBeyondScatter ""
+# On discs the plate friction has no signature: listed as not testable, never screened.
+if grep -q "^plateFriction" none/study/screening.dat; then
+    awk -F'\t' '$1 == "plateFriction" { found = 1; if ($2 != "notTestable") exit 1 } END { exit !found }' \
+        none/study/screening.dat || fail "none: plateFriction not reported as notTestable on discs"
+    echo "none: plateFriction listed as not testable on discs"
+fi
 scenario seating    "seatingOffset { depth 0.03e-3; closureForce 1500; }" explained seatingOffset
 scenario compliance "machineCompliance { compliance 5e-9; }"              explained machineCompliance
 # Crumbling under the plates and a compliant frame both soften the disc's contact: on this
