@@ -7,6 +7,7 @@
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 
 namespace rockfrac::calibration {
@@ -174,6 +175,14 @@ std::string describeValues(const CalibrationStudy& study, const std::vector<doub
     return text;
 }
 
+const std::vector<std::string>& calibrationDictEntries()
+{
+    static const std::vector<std::string> entries = {
+        "model",      "method", "case",  "measurements",    "prepare", "command", "jobs",
+        "parameters", "tied",   "seeds", "responseSurface", "bobyqa",  "target"};
+    return entries;
+}
+
 CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
 {
     CalibrationStudy s;
@@ -183,6 +192,9 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
         throw UserError("no '" + s.dictionary.string() +
                         "'; a calibration study holds system/calibrationDict (see calibrateModel -help)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, calibrationDictEntries());
+    checkKnownSubEntries(dict, "responseSurface", {"design", "levels", "samples", "seed", "starts"});
+    checkKnownSubEntries(dict, "bobyqa", {"maxEvaluations", "initialStep", "tolerance"});
     s.model = dict.getWord("model", {"dem", "fem"});
     s.method = dict.found("method") ? dict.getWord("method", {"responseSurface", "bobyqa"})
                                     : (s.model == "dem" ? "responseSurface" : "bobyqa");

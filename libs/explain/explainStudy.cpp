@@ -6,6 +6,7 @@
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "effects/modelEffect.hpp"
 #include "explain/responseFeatures.hpp"
@@ -119,6 +120,29 @@ calibration::CalibrationStudy ExplainStudy::runStudy(std::size_t condition) cons
     return s;
 }
 
+const std::vector<std::string>& explainGapDictEntries()
+{
+    static const std::vector<std::string> entries = {"conditions",
+                                                     "case",
+                                                     "measurements",
+                                                     "prepare",
+                                                     "command",
+                                                     "jobs",
+                                                     "simulations",
+                                                     "seeds",
+                                                     "baseline",
+                                                     "tied",
+                                                     "effects",
+                                                     "effectSettings",
+                                                     "features",
+                                                     "statistics",
+                                                     "response",
+                                                     "heldOut",
+                                                     "minimumGapReduction",
+                                                     "significance"};
+    return entries;
+}
+
 ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 {
     ExplainStudy s;
@@ -129,6 +153,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
             "missing '" + s.dictionary.string() +
             "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, explainGapDictEntries());
     auto condition = [&](const Dictionary& d, const std::string& name) {
         TestCondition c;
         c.name = name;
@@ -266,6 +291,13 @@ calibration::CalibrationStudy TwinStudy::runStudy() const
     return demRunStudy(directory, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
 }
 
+const std::vector<std::string>& twinDataDictEntries()
+{
+    static const std::vector<std::string> entries = {"case",    "prepare", "command", "jobs",     "seeds",
+                                                     "effects", "noise",   "output",  "material", "response"};
+    return entries;
+}
+
 TwinStudy readTwinStudy(const fs::path& studyDirectory)
 {
     TwinStudy s;
@@ -275,6 +307,8 @@ TwinStudy readTwinStudy(const fs::path& studyDirectory)
         throw UserError("missing '" + s.dictionary.string() +
                         "': a twin-data study is a directory with system/twinDataDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, twinDataDictEntries());
+    checkKnownSubEntries(dict, "noise", {"force", "displacement", "seed"});
     s.targetCase = existingCase(dict, studyDirectory);
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
     s.seeds = readSeeds(dict, {s.targetCase}, 1, "one Voronoi seed per synthetic specimen");

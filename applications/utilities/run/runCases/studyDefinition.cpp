@@ -4,9 +4,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "calibration/calibrationStudy.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "stats/design.hpp"
 
@@ -194,6 +196,7 @@ Study readStudy(const fs::path& studyDirectory)
         throw UserError("no '" + study.dictionary.string() +
                         "'; a study directory holds system/runCasesDict (see runCases -help)");
     const Dictionary dict = Dictionary::readFile(study.dictionary);
+    checkKnownEntries(dict, calibration::runCasesDictEntries());
     study.templateCase = studyDirectory / dict.get<std::string>("template");
     if (!fs::is_directory(study.templateCase))
         throw UserError(dict.location("template").str() + ": template case '" + study.templateCase.string() +
