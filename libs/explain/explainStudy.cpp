@@ -52,6 +52,7 @@ calibration::SeedList readSeeds(const Dictionary& dict, const std::vector<fs::pa
                         ": 'seeds { file system/voronoiMeshDict; entry seed; values (1 2 3 4); }' " +
                         "is required: " + why);
     const Dictionary& s = dict.subDict("seeds");
+    checkKnownEntries(s, {"file", "entry", "values"});
     calibration::SeedList seeds;
     seeds.file = s.get<std::string>("file");
     seeds.entry = s.get<std::string>("entry");
@@ -155,6 +156,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     const Dictionary dict = Dictionary::readFile(s.dictionary);
     checkKnownEntries(dict, explainGapDictEntries());
     auto condition = [&](const Dictionary& d, const std::string& name) {
+        if (!name.empty()) checkKnownEntries(d, {"case", "measurements"});
         TestCondition c;
         c.name = name;
         c.targetCase = existingCase(d, studyDirectory);
@@ -208,6 +210,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
             throw UserError(e.keywordLocation.str() + ": baseline parameter '" + e.keyword +
                             "' must be a dictionary { entry ...; range (low high); }");
         const Dictionary& d = *e.dict;
+        checkKnownEntries(d, {"file", "entry", "unit", "range", "relativeStep"});
         BaselineParameter b;
         b.where.name = e.keyword;
         b.where.file = d.getOrDefault<std::string>("file", "constant/rockProperties");
@@ -225,6 +228,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     if (dict.isDict("tied"))
         for (const Entry& e : dict.subDict("tied").entries()) {
             const Dictionary& d = *e.dict;
+            checkKnownEntries(d, {"entry", "factor", "of"});
             calibration::TiedEntry t;
             t.name = e.keyword;
             t.entry = d.get<std::string>("entry");

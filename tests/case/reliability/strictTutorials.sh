@@ -10,7 +10,7 @@ source "$(dirname "$0")/../caseTestFunctions"
 # 1. caseDict -check over every directory that holds a system/ dictionary.
 checked=0
 while IFS= read -r dir; do
-    err=$(caseDict -case "$dir" -check 2>&1 > /dev/null) || fail "caseDict -check $dir: $err"
+    err=$(caseDict -case "$src/$dir" -check 2>&1 > /dev/null) || fail "caseDict -check $dir: $err"
     checked=$((checked + 1))
 done < <(cd "$src" && find tutorials cases -type d -name system -printf '%h\n' | sort)
 [ "$checked" -gt 30 ] || fail "only $checked case directories found under tutorials/ and cases/"

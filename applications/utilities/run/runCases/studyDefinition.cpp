@@ -58,6 +58,7 @@ Parameter readParameter(const Entry& entry, const fs::path& templateCase)
                         "' must be a dictionary, e.g. '" + entry.keyword +
                         " { file constant/rockProperties; entry bond/voronoiQNSC/E; values (40e9 46e9); }'");
     const Dictionary& dict = *entry.dict;
+    checkKnownEntries(dict, {"file", "entry", "unit", "values", "range"});
     Parameter parameter;
     parameter.name = entry.keyword;
     parameter.target = readTarget(dict, "parameter '" + entry.keyword + "'", templateCase);
@@ -88,6 +89,7 @@ Result readResult(const Entry& entry)
                         "' must be a dictionary, e.g. '" + entry.keyword +
                         " { file \"postProcessing/summary/0/summary.dat\"; column peakForce; }'");
     const Dictionary& dict = *entry.dict;
+    checkKnownEntries(dict, {"file", "unit", "column", "select", "entry"});
     Result result;
     result.name = entry.keyword;
     result.file = dict.get<std::string>("file");
@@ -208,6 +210,7 @@ Study readStudy(const fs::path& studyDirectory)
             study.parameters.push_back(readParameter(entry, study.templateCase));
     if (dict.found("seeds")) {
         const Dictionary& seeds = dict.subDict("seeds");
+        checkKnownEntries(seeds, {"file", "entry", "values"});
         study.seedTarget = readTarget(seeds, "seeds", study.templateCase);
         study.seeds = readValueTexts(seeds, "values");
     }
