@@ -7,6 +7,7 @@
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 
 namespace rockfrac::calibration {
@@ -37,6 +38,7 @@ CalibratedParameter readParameter(const Entry& e, const fs::path& caseDir)
                         "' must be a dictionary, e.g. '" + e.keyword +
                         " { entry bond/voronoiQNSC/E; range (20e9 80e9); }'");
     const Dictionary& d = *e.dict;
+    checkKnownEntries(d, {"file", "entry", "unit", "range"});
     CalibratedParameter p;
     p.name = e.keyword;
     p.file = d.getOrDefault<std::string>("file", defaultFile.string());
@@ -59,6 +61,7 @@ TiedEntry readTied(const Entry& e, const CalibrationStudy& study)
                         "' must be a dictionary, e.g. '" + e.keyword +
                         " { entry bond/voronoiQNSC/cohesion; factor 1.5; of tensileStrength; }'");
     const Dictionary& d = *e.dict;
+    checkKnownEntries(d, {"entry", "factor", "of", "file"});
     TiedEntry t;
     t.name = e.keyword;
     t.entry = d.get<std::string>("entry");
@@ -111,6 +114,11 @@ void readMethodSettings(const Dictionary& dict, CalibrationStudy& s)
 void readTarget(const Dictionary& dict, CalibrationStudy& s)
 {
     const Dictionary& t = dict.subDict("target");
+    checkKnownEntries(t, s.model == "fem" ? std::vector<std::string>{"response", "failureLoad", "distance"}
+                                          : std::vector<std::string>{
+                                                "response", "force", "displacement", "displacementAtPeak",
+                                                "displacementSource", "forceWeight", "displacementWeight",
+                                                "regularisation", "reference"});
     s.responseFile = t.get<std::string>("response");
     for (const auto& p : s.parameters) s.reference.push_back(0.5 * (p.low + p.high));  // BOBYQA starts here
     if (s.model == "fem") {
@@ -140,6 +148,7 @@ void readTarget(const Dictionary& dict, CalibrationStudy& s)
     s.regularisation = t.getScalarOrDefault("regularisation", 1e-3, Bounds::nonNegative());
     if (t.found("reference")) {
         const auto& ref = t.subDict("reference");
+        checkKnownEntries(ref, s.parameterNames());
         for (std::size_t i = 0; i < s.parameters.size(); ++i)
             if (ref.found(s.parameters[i].name))
                 s.reference[i] = ref.getScalar(s.parameters[i].name,
@@ -174,6 +183,14 @@ std::string describeValues(const CalibrationStudy& study, const std::vector<doub
     return text;
 }
 
+const std::vector<std::string>& calibrationDictEntries()
+{
+    static const std::vector<std::string> entries = {
+        "model",      "method", "case",  "measurements",    "prepare", "command", "jobs",
+        "parameters", "tied",   "seeds", "responseSurface", "bobyqa",  "target"};
+    return entries;
+}
+
 CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
 {
     CalibrationStudy s;
@@ -183,6 +200,9 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
         throw UserError("no '" + s.dictionary.string() +
                         "'; a calibration study holds system/calibrationDict (see calibrateModel -help)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, calibrationDictEntries());
+    checkKnownSubEntries(dict, "responseSurface", {"design", "levels", "samples", "seed", "starts"});
+    checkKnownSubEntries(dict, "bobyqa", {"maxEvaluations", "initialStep", "tolerance"});
     s.model = dict.getWord("model", {"dem", "fem"});
     s.method = dict.found("method") ? dict.getWord("method", {"responseSurface", "bobyqa"})
                                     : (s.model == "dem" ? "responseSurface" : "bobyqa");
@@ -209,6 +229,7 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
         for (const Entry& e : dict.subDict("tied").entries()) s.tied.push_back(readTied(e, s));
     if (dict.found("seeds")) {
         const Dictionary& d = dict.subDict("seeds");
+        checkKnownEntries(d, {"file", "entry", "values"});
         SeedList seeds{
             d.getOrDefault<std::string>("file", defaultFile.string()), d.get<std::string>("entry"), {}};
         for (double v : d.get<std::vector<double>>("values")) seeds.values.push_back(formatNumber(v));

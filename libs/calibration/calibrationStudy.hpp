@@ -82,6 +82,17 @@ struct CalibrationStudy {
 
 // Read and check system/calibrationDict of `studyDirectory` and the measurements it names.
 CalibrationStudy readCalibrationStudy(const std::filesystem::path& studyDirectory);
+// The top-level entries of system/calibrationDict that readCalibrationStudy reads.
+const std::vector<std::string>& calibrationDictEntries();
+
+// The top-level entries of system/runCasesDict (runCases reads them; calibrateModel and
+// explainGap write such dictionaries).
+inline const std::vector<std::string>& runCasesDictEntries()
+{
+    static const std::vector<std::string> entries = {"template", "command", "jobs",    "parameters", "seeds",
+                                                     "results",  "design",  "samples", "seed"};
+    return entries;
+}
 
 // "E=4.6e10 Pa, tensileStrength=2.8e7 Pa, ...".
 std::string describeValues(const CalibrationStudy& study, const std::vector<double>& values);

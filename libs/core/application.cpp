@@ -7,6 +7,8 @@
 #include <ctime>
 #include <iostream>
 
+#include "core/knownEntries.hpp"
+
 namespace rockfrac {
 
 namespace {
@@ -18,6 +20,7 @@ const std::vector<AppOption>& commonOptions()
         {"-case", "dir", "case directory (default: the current directory)"},
         {"-dry-run", "", "read and check every input, run nothing, write nothing"},
         {"-noFunctionObjects", "", "do not execute the functions of controlDict"},
+        {"-strict", "", "refuse unknown (misspelt) dictionary entries instead of warning"},
         {"-help", "", "print this help and exit"},
     };
     return options;
@@ -49,6 +52,7 @@ std::string localTime()
 
 Application::Application(const AppInfo& info, int argc, char** argv) : info_(info)
 {
+    setStrictEntries(false, info_.name);
     for (int i = 1; i < argc; ++i) {
         const std::string word = argv[i];
         if (word == "-help" || word == "--help" || word == "-h") {
@@ -74,6 +78,8 @@ Application::Application(const AppInfo& info, int argc, char** argv) : info_(inf
                 dryRun_ = true;
             else if (word == "-noFunctionObjects")
                 functionObjects_ = false;
+            else if (word == "-strict")
+                setStrictEntries(true, info_.name);
             else
                 options_[word] = value;
             continue;

@@ -3,7 +3,7 @@
 //
 // A main() is thin: it declares what the application is (AppInfo), then hands
 // its body to runApplication(), which parses the common options (-case, -help,
-// -dry-run, -noFunctionObjects), prints the banner, and turns errors into the
+// -dry-run, -noFunctionObjects, -strict), prints the banner, and turns errors into the
 // documented exit codes: 0 success, 1 user error (one clear line), 2 internal.
 //
 //   int main(int argc, char** argv)

@@ -6,12 +6,22 @@
 
 #include "core/application.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/progress.hpp"
 
 namespace rockfrac {
 
-TimeLoop::TimeLoop(const Application& app)
-    : TimeLoop(Dictionary::readFile(app.path("system/controlDict")), app.casePath(), app.dryRun())
+namespace {
+Dictionary checkedControlDict(const Application& app, const ControlDictEntries& entries)
+{
+    Dictionary controlDict = Dictionary::readFile(app.path("system/controlDict"));
+    checkControlDict(controlDict, entries.run, entries.functions);
+    return controlDict;
+}
+}  // namespace
+
+TimeLoop::TimeLoop(const Application& app, const ControlDictEntries& entries)
+    : TimeLoop(checkedControlDict(app, entries), app.casePath(), app.dryRun())
 {
 }
 
@@ -87,11 +97,27 @@ void TimeLoop::fail(TimedRun& run, const StepResult& result)
     throw UserError(text);
 }
 
+const std::vector<std::string>& timeControlEntries()
+{
+    static const std::vector<std::string> entries = {
+        "application",   "startFrom",  "startTime",      "endTime", "deltaT",   "writeControl",
+        "writeInterval", "purgeWrite", "writePrecision", "stopAt",  "functions"};
+    return entries;
+}
+
+void checkControlDict(const Dictionary& controlDict, const std::vector<std::string>& runEntries,
+                      const std::vector<std::string>& functions)
+{
+    checkKnownEntries(controlDict, withEntries(timeControlEntries(), runEntries));
+    checkKnownSubEntries(controlDict, "functions", functions);
+}
+
 long readSampleInterval(const Dictionary& controlDict, const std::string& function, long defaultSteps)
 {
     if (!controlDict.found("functions") || !controlDict.subDict("functions").found(function))
         return defaultSteps;
     const Dictionary& dict = controlDict.subDict("functions").subDict(function);
+    checkKnownEntries(dict, {"writeInterval"});
     const long interval = dict.getOrDefault<long>("writeInterval", defaultSteps);
     if (interval < 1)
         throw UserError(dict.location("writeInterval").str() + ": functions/" + function +

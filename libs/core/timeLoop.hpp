@@ -7,7 +7,7 @@
 // controlDict's time and write control (TimeControl), the step counter, -dry-run,
 // SIGINT/SIGTERM, the progress lines, the sampling cadence and the write rules.
 //
-//   TimeLoop loop(app);                                // system/controlDict
+//   TimeLoop loop(app, {runEntries, functions});       // system/controlDict, checked
 //   std::unique_ptr<TimedRun> run = newXRun(app, loop);  // reads and checks every input
 //   run->printSetup();
 //   return loop.run(*run);                             // the exit code
@@ -34,6 +34,7 @@
 // at the same steps as the uninterrupted one.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/dictionary.hpp"
 #include "core/timeControl.hpp"
@@ -102,10 +103,17 @@ protected:
     TimeControl& runTime;           // deltaT (a solver may set it), endTime, time directories
 };
 
+// The entries of controlDict a run reads beyond the loop's (timeControlEntries), and the
+// names of its functions: the loop checks controlDict against them before it reads it.
+struct ControlDictEntries {
+    std::vector<std::string> run;
+    std::vector<std::string> functions;
+};
+
 class TimeLoop {
 public:
-    // Reads <case>/system/controlDict.
-    explicit TimeLoop(const Application& app);
+    // Reads <case>/system/controlDict, after checking it for unknown entries.
+    TimeLoop(const Application& app, const ControlDictEntries& entries);
     TimeLoop(Dictionary controlDict, const std::filesystem::path& caseDir, bool dryRun = false);
 
     const Dictionary& controlDict() const { return controlDict_; }
@@ -124,6 +132,14 @@ private:
     bool dryRun_ = false;
     long step_ = 0;
 };
+
+// The entries of system/controlDict that TimeControl reads, plus `functions` and
+// `application` (which only names the solver, as in OpenFOAM).
+const std::vector<std::string>& timeControlEntries();
+// Unknown entries of controlDict (core/knownEntries.hpp): the top level against
+// timeControlEntries() and the run's own `runEntries`, functions against `functions`.
+void checkControlDict(const Dictionary& controlDict, const std::vector<std::string>& runEntries,
+                      const std::vector<std::string>& functions);
 
 // functions/<function>/writeInterval of controlDict [steps], >= 1; defaultSteps without it.
 long readSampleInterval(const Dictionary& controlDict, const std::string& function, long defaultSteps);

@@ -7,7 +7,7 @@
 // loop, the write rules and signals are TimeLoop's. It cannot restart (cells are inserted
 // and removed; no state file), so it writes no time directories, only VTK/cells_<step>.vtu.
 //
-//   TimeLoop loop(app);
+//   TimeLoop loop(app, {demControlEntries(), {"machine"}});
 //   const std::unique_ptr<TimedRun> run = newCrusherRun(app, loop);  // reads and checks every input
 //   run->printSetup();
 //   return loop.run(*run);

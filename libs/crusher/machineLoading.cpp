@@ -4,6 +4,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 
 namespace rockfrac {
 
@@ -32,6 +33,7 @@ fs::path casePath(const fs::path& caseDir, const std::string& entry)
 
 void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, MantleSpinSpec& spin)
 {
+    checkKnownEntries(d, {"mantle", "concave", "kinematics", "spin", "spinInertia", "bearingDamping"});
     m.mantle_stl = casePath(caseDir, d.getOrDefault<std::string>("mantle", "constant/triSurface/mantle.stl"));
     m.concave_stl =
         casePath(caseDir, d.getOrDefault<std::string>("concave", "constant/triSurface/concave.stl"));
@@ -70,6 +72,9 @@ void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, M
 
 void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
 {
+    checkKnownEntries(d, {"rock", "sizeRange", "massRate", "totalMass", "region", "velocity", "attempts",
+                          "linerClearance", "interval", "seed"});
+    checkKnownSubEntries(d, "region", {"zRange", "rRange"});
     f.rock_case = casePath(caseDir, d.get<std::string>("rock"));
     if (!fs::exists(f.rock_case / "constant/voronoiMesh/meshInfo"))
         throw UserError(d.fileName() + ": feed/rock: " + (f.rock_case / "constant/voronoiMesh").string() +
@@ -94,8 +99,17 @@ void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
 
 }  // namespace
 
+const std::vector<std::string>& machineLoadingEntries()
+{
+    static const std::vector<std::string> entries = {"machine", "feed", "choke", "destructor", "gravity"};
+    return entries;
+}
+
 MachineLoading readMachineLoading(const Dictionary& d, const fs::path& caseDir)
 {
+    checkKnownEntries(d, machineLoadingEntries());
+    checkKnownSubEntries(d, "choke", {"level", "duration"});
+    checkKnownSubEntries(d, "destructor", {"below", "interval"});
     MachineLoading l;
     readMachine(d.subDict("machine"), caseDir, l.machine, l.spin);
     readFeed(d.subDict("feed"), caseDir, l.feed);

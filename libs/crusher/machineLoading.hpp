@@ -3,6 +3,8 @@
 // `destructor` sections (docs/user-guide-crusher.md lists every entry).
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "core/vec3.hpp"
 #include "crusher/mantleSpin.hpp"
@@ -58,5 +60,14 @@ struct MachineLoading {
 bool isMachineLoading(const Dictionary& loading);
 // Reads and checks every entry; paths are relative to caseDir. UserError naming the entry.
 MachineLoading readMachineLoading(const Dictionary& loading, const std::filesystem::path& caseDir);
+// The top-level entries of a crusher's constant/loading that readMachineLoading reads.
+const std::vector<std::string>& machineLoadingEntries();
+
+// The entries of system/crusherPostDict (read by crusherPost).
+inline const std::vector<std::string>& crusherPostDictEntries()
+{
+    static const std::vector<std::string> entries = {"steadyStart", "pistonArea"};
+    return entries;
+}
 
 }  // namespace rockfrac

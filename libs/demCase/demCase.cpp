@@ -4,6 +4,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/selector.hpp"
 #include "dem/bondLawModel.hpp"
 #include "dem/contactLaw.hpp"
@@ -63,11 +64,18 @@ void readContact(const Dictionary& contact, DemParameters& p)
 
 }  // namespace
 
+const std::vector<std::string>& demRockPropertiesEntries()
+{
+    static const std::vector<std::string> entries = {"rock", "steel", "bond", "contact"};
+    return entries;
+}
+
 DemParameters readDemParameters(const Dictionary& d)
 {
     static const Dimensions pascal = Dimensions::fromUnits("Pa");
     static const Dimensions density = Dimensions::fromUnits("kg/m^3");
 
+    checkKnownEntries(d, demRockPropertiesEntries());
     DemParameters p;
     const Dictionary& rock = d.subDict("rock");
     requireKnownEntries(rock, {"E", "poissonRatio", "density"});
@@ -86,12 +94,23 @@ DemParameters readDemParameters(const Dictionary& d)
     return p;
 }
 
+const std::vector<std::string>& demLoadingEntries()
+{
+    static const std::vector<std::string> entries = {"plates", "gravity", "settling", "stop"};
+    return entries;
+}
+
 Loading readLoading(const Dictionary& d)
 {
+    checkKnownEntries(d, demLoadingEntries());
+    checkKnownSubEntries(d, "plates", {"lower", "upper", "startGap"});
+    checkKnownSubEntries(d, "settling", {"duration"});
+    checkKnownSubEntries(d, "stop", {"forceDropFraction", "maxDisplacement", "minPeakForce"});
     Loading l;
     const Dictionary& plates = d.subDict("plates");
     auto plate = [&](const std::string& name) {
         const Dictionary& p = plates.subDict(name);
+        checkKnownEntries(p, {"normal", "velocity"});
         PlateSpec s;
         s.normal = normalised(p.get<Vec3>("normal"));
         s.velocity = p.get<Vec3>("velocity");

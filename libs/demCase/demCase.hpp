@@ -19,6 +19,8 @@ namespace rockfrac {
 class Dictionary;
 
 DemParameters readDemParameters(const Dictionary& rockProperties);
+// The top-level entries of constant/rockProperties that readDemParameters reads.
+const std::vector<std::string>& demRockPropertiesEntries();
 
 // Two horizontal rigid plates (normal ±z) and what drives them.
 struct PlateSpec {
@@ -37,6 +39,8 @@ struct Loading {
 };
 
 Loading readLoading(const Dictionary& loading);
+// The top-level entries of constant/loading (plates) that readLoading reads.
+const std::vector<std::string>& demLoadingEntries();
 
 // Cell polyhedra in their body frames, for drawing cells as they move.
 struct CellShapes {
@@ -55,6 +59,9 @@ void writeDemVtk(const std::filesystem::path& caseDir, int index, const DemModel
 // build or machine has none is one UserError naming the entry (demCuda/cudaDemModel.hpp).
 class Dictionary;
 bool readCudaBackend(const Dictionary& controlDict);
+// The entries of controlDict a DEM run (plates or crusher) reads beyond the time loop's:
+// backend and the time step's rayleighFraction / criticalFraction (chooseDemTimeStep).
+const std::vector<std::string>& demControlEntries();
 
 // Whole state (cells, bonds, contacts, walls, clock, energies) of a model.
 void writeDemState(const std::filesystem::path& file, const DemModel& model, long step, double peakForce,

@@ -48,6 +48,12 @@ void checkDemMemory(const fs::path& caseDir)
 
 // controlDict `backend cpu|cuda;` (default cpu). Asking for cuda where this build or
 // machine has none is one error naming the entry (demCuda/cudaDemModel.hpp).
+const std::vector<std::string>& demControlEntries()
+{
+    static const std::vector<std::string> entries = {"backend", "rayleighFraction", "criticalFraction"};
+    return entries;
+}
+
 bool readCudaBackend(const Dictionary& controlDict)
 {
     if (!controlDict.found("backend")) return false;

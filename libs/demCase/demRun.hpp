@@ -5,7 +5,7 @@
 // plateForce.dat rows, its stop criterion and its time directories (<time>/demState,
 // VTK/cells_<step>.vtu); the loop, the write rules, signals and restart are TimeLoop's.
 //
-//   TimeLoop loop(app);
+//   TimeLoop loop(app, {demControlEntries(), {"plateForce"}});
 //   const std::unique_ptr<TimedRun> run = newBondedDemRun(app, loop);  // reads and checks every input
 //   run->printSetup();
 //   return loop.run(*run);

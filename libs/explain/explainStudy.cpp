@@ -6,6 +6,7 @@
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "effects/modelEffect.hpp"
 #include "explain/responseFeatures.hpp"
@@ -51,6 +52,7 @@ calibration::SeedList readSeeds(const Dictionary& dict, const std::vector<fs::pa
                         ": 'seeds { file system/voronoiMeshDict; entry seed; values (1 2 3 4); }' " +
                         "is required: " + why);
     const Dictionary& s = dict.subDict("seeds");
+    checkKnownEntries(s, {"file", "entry", "values"});
     calibration::SeedList seeds;
     seeds.file = s.get<std::string>("file");
     seeds.entry = s.get<std::string>("entry");
@@ -119,6 +121,29 @@ calibration::CalibrationStudy ExplainStudy::runStudy(std::size_t condition) cons
     return s;
 }
 
+const std::vector<std::string>& explainGapDictEntries()
+{
+    static const std::vector<std::string> entries = {"conditions",
+                                                     "case",
+                                                     "measurements",
+                                                     "prepare",
+                                                     "command",
+                                                     "jobs",
+                                                     "simulations",
+                                                     "seeds",
+                                                     "baseline",
+                                                     "tied",
+                                                     "effects",
+                                                     "effectSettings",
+                                                     "features",
+                                                     "statistics",
+                                                     "response",
+                                                     "heldOut",
+                                                     "minimumGapReduction",
+                                                     "significance"};
+    return entries;
+}
+
 ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 {
     ExplainStudy s;
@@ -129,7 +154,9 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
             "missing '" + s.dictionary.string() +
             "': an explainGap study is a directory with system/explainGapDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, explainGapDictEntries());
     auto condition = [&](const Dictionary& d, const std::string& name) {
+        if (!name.empty()) checkKnownEntries(d, {"case", "measurements"});
         TestCondition c;
         c.name = name;
         c.targetCase = existingCase(d, studyDirectory);
@@ -183,6 +210,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
             throw UserError(e.keywordLocation.str() + ": baseline parameter '" + e.keyword +
                             "' must be a dictionary { entry ...; range (low high); }");
         const Dictionary& d = *e.dict;
+        checkKnownEntries(d, {"file", "entry", "unit", "range", "relativeStep"});
         BaselineParameter b;
         b.where.name = e.keyword;
         b.where.file = d.getOrDefault<std::string>("file", "constant/rockProperties");
@@ -200,6 +228,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     if (dict.isDict("tied"))
         for (const Entry& e : dict.subDict("tied").entries()) {
             const Dictionary& d = *e.dict;
+            checkKnownEntries(d, {"entry", "factor", "of"});
             calibration::TiedEntry t;
             t.name = e.keyword;
             t.entry = d.get<std::string>("entry");
@@ -266,6 +295,13 @@ calibration::CalibrationStudy TwinStudy::runStudy() const
     return demRunStudy(directory, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
 }
 
+const std::vector<std::string>& twinDataDictEntries()
+{
+    static const std::vector<std::string> entries = {"case",    "prepare", "command", "jobs",     "seeds",
+                                                     "effects", "noise",   "output",  "material", "response"};
+    return entries;
+}
+
 TwinStudy readTwinStudy(const fs::path& studyDirectory)
 {
     TwinStudy s;
@@ -275,6 +311,8 @@ TwinStudy readTwinStudy(const fs::path& studyDirectory)
         throw UserError("missing '" + s.dictionary.string() +
                         "': a twin-data study is a directory with system/twinDataDict (docs/explainGap.md)");
     const Dictionary dict = Dictionary::readFile(s.dictionary);
+    checkKnownEntries(dict, twinDataDictEntries());
+    checkKnownSubEntries(dict, "noise", {"force", "displacement", "seed"});
     s.targetCase = existingCase(dict, studyDirectory);
     readCommands(dict, s.prepareCommand, s.command, s.jobs);
     s.seeds = readSeeds(dict, {s.targetCase}, 1, "one Voronoi seed per synthetic specimen");

@@ -59,6 +59,8 @@ struct ExplainStudy {
 };
 
 ExplainStudy readExplainStudy(const std::filesystem::path& studyDirectory);
+// The top-level entries of system/explainGapDict that readExplainStudy reads.
+const std::vector<std::string>& explainGapDictEntries();
 
 // The twin-data generator: the model case, its hidden effects, the specimens'
 // seeds and the noise; the label goes to <study>/hiddenLabel only.
@@ -80,5 +82,7 @@ struct TwinStudy {
 };
 
 TwinStudy readTwinStudy(const std::filesystem::path& studyDirectory);
+// The top-level entries of system/twinDataDict that readTwinStudy reads.
+const std::vector<std::string>& twinDataDictEntries();
 
 }  // namespace rockfrac::explain

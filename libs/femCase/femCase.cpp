@@ -7,6 +7,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/selector.hpp"
 #include "io/stateFile.hpp"
 #include "io/vtkOutput.hpp"
@@ -17,6 +18,16 @@ namespace fs = std::filesystem;
 using namespace fem;
 
 // ---- Parameters ------------------------------------------------------------------
+
+const std::vector<std::string>& femRockPropertiesEntries()
+{
+    static const std::vector<std::string> entries = [] {
+        std::vector<std::string> e = {"rock", "material"};
+        for (const std::string& m : femMaterials().names()) e.push_back(m);
+        return e;
+    }();
+    return entries;
+}
 
 FemParameters readFemParameters(const Dictionary& d)
 {
@@ -34,16 +45,39 @@ FemParameters readFemParameters(const Dictionary& d)
                 d.location(moved).str() + ": '" + moved +
                 "' belongs in the material's own sub-dictionary: kstDfh { kst { ... } dfh { ... } } "
                 "(docs/models/fem/kstDfh.md)");
+    checkKnownEntries(d, femRockPropertiesEntries());
     p.material = femMaterials().select(d, "material");  // the model reads its own sub-dictionary
     return p;
 }
 
+const std::vector<std::string>& femControlEntries()
+{
+    static const std::vector<std::string> entries = {"timeStepSafety", "massScalingTimeStep", "massDamping"};
+    return entries;
+}
+
 // ---- Loading ---------------------------------------------------------------------
+
+const std::vector<std::string>& femLoadingEntries()
+{
+    static const std::vector<std::string> entries = {"plates", "arcLoad",     "gravity",     "settling",
+                                                     "stop",   "failureLoad", "extensometer"};
+    return entries;
+}
 
 FemLoading readFemLoading(const Dictionary& d)
 {
     static const Dimensions length = Dimensions::fromUnits("m");
     static const Dimensions pressureRate = Dimensions::fromUnits("Pa/s");
+    checkKnownEntries(d, femLoadingEntries());
+    checkKnownSubEntries(
+        d, "plates",
+        {"lower", "upper", "startGap", "contactPenaltyScale", "tangentialPenaltyRatio", "crushingPressure"});
+    checkKnownSubEntries(d, "arcLoad", {"halfAngle", "pressureRate"});
+    checkKnownSubEntries(d, "settling", {"duration"});
+    checkKnownSubEntries(d, "stop", {"forceDropFraction", "minPeakForce"});
+    checkKnownSubEntries(d, "failureLoad", {"dropFraction"});
+    checkKnownSubEntries(d, "extensometer", {"length", "centre"});
     FemLoading l;
     const bool plates = d.found("plates"), arc = d.found("arcLoad");
     if (plates == arc)
@@ -54,6 +88,7 @@ FemLoading readFemLoading(const Dictionary& d)
         const Dictionary& p = d.subDict("plates");
         auto plate = [&](const std::string& name) {
             const Dictionary& s = p.subDict(name);
+            checkKnownEntries(s, {"velocity", "friction"});
             FemPlateSpec spec;
             spec.velocity = s.get<Vec3>("velocity");
             spec.friction = s.getScalarOrDefault("friction", 0.6, Bounds::nonNegative());

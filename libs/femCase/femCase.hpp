@@ -23,6 +23,11 @@ class Dictionary;
 // massDamping, time step and mass scaling come from controlDict, the contact
 // penalties from constant/loading).
 fem::FemParameters readFemParameters(const Dictionary& rockProperties);
+// The top-level entries of constant/rockProperties that readFemParameters reads.
+const std::vector<std::string>& femRockPropertiesEntries();
+// The entries of controlDict the FEM run reads beyond the time loop's (FeFractureRun's
+// readSolverControls): timeStepSafety, massScalingTimeStep, massDamping.
+const std::vector<std::string>& femControlEntries();
 
 // Two horizontal rigid plates (lower normal +z, upper -z).
 struct FemPlateSpec {
@@ -60,6 +65,8 @@ struct FemLoading {
 };
 
 FemLoading readFemLoading(const Dictionary& loading);
+// The top-level entries of constant/loading that readFemLoading reads.
+const std::vector<std::string>& femLoadingEntries();
 
 // Lumped nodal forces of a uniform radial pressure of 1 Pa on the two arcs of a disc
 // with axis y through `centre` (3 per node), from the boundary faces whose centroid lies on

@@ -6,6 +6,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/memoryLimit.hpp"
 #include "fem/measurements.hpp"
 #include "femCase/femCase.hpp"
@@ -235,6 +236,7 @@ private:
         const Dictionary& functions = controlDict.subDict("functions");
         if (functions.found("centreStress")) {
             static const Dimensions metre = Dimensions::fromUnits("m");
+            checkKnownEntries(functions.subDict("centreStress"), {"radius"});
             probeRadius = functions.subDict("centreStress").getScalar("radius", Bounds::positive(), &metre);
             const Vec3 c = bounds.centre();
             for (std::size_t e = 0; e < mesh.numTets(); ++e) {

@@ -6,7 +6,7 @@
 // centreStress), its stop criterion and its time directories (<time>/femState,
 // VTK/fem_<step>.vtu); the loop, the write rules, signals and restart are TimeLoop's.
 //
-//   TimeLoop loop(app);
+//   TimeLoop loop(app, {femControlEntries(), {"plateForce", "centreStress"}});
 //   const std::unique_ptr<TimedRun> run = newFeFractureRun(app, loop);  // reads and checks every input
 //   run->printSetup();
 //   return loop.run(*run);

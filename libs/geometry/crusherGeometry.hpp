@@ -118,6 +118,16 @@ struct ChamberSpec {
     ThrowDefinition throw_definition = ThrowDefinition::settingDifference;
 };
 
+// The top-level entries of system/meshCrusherDict (meshCrusher reads ChamberSpec and
+// nSegments from it; mantle and concave each hold a profile).
+inline const std::vector<std::string>& meshCrusherDictEntries()
+{
+    static const std::vector<std::string> entries = {
+        "mantle",         "concave",           "closedSideSetting", "throw",    "pivotHeight",
+        "eccentricSpeed", "closedSideAzimuth", "throwDefinition",   "nSegments"};
+    return entries;
+}
+
 struct ChamberDesign {
     CrusherChamber chamber;
     CrusherKinematics kinematics;

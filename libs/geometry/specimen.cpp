@@ -6,6 +6,7 @@
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/selector.hpp"
 #include "io/foamFile.hpp"
 
@@ -176,8 +177,16 @@ Specimen buildGenerated(const Dictionary& d)
 
 }  // namespace
 
+const std::vector<std::string>& meshRockDictEntries()
+{
+    // The blocks of the kinds not selected may stay (a case switches by `geometry`).
+    static const std::vector<std::string> entries = {"geometry", "disc", "stl", "generated"};
+    return entries;
+}
+
 Specimen buildSpecimen(const Dictionary& dict, const fs::path& caseDir)
 {
+    checkKnownEntries(dict, meshRockDictEntries());
     const std::string kind = dict.getWord("geometry", {"disc", "stl", "generated"});
     if (kind == "disc") return buildDisc(dict.subDict("disc"));
     if (kind == "stl") return buildFromStl(dict.subDict("stl"), caseDir);

@@ -41,6 +41,8 @@ struct Specimen {
 
 // Build from system/meshRockDict. `caseDir` resolves relative file names.
 Specimen buildSpecimen(const Dictionary& meshRockDict, const std::filesystem::path& caseDir);
+// The top-level entries of system/meshRockDict (buildSpecimen).
+const std::vector<std::string>& meshRockDictEntries();
 
 // constant/geometryProperties
 void writeSpecimen(const std::filesystem::path& caseDir, const Specimen& specimen);

@@ -8,6 +8,7 @@
 // count, volume error against the solid, and shape quality.
 #include <array>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "geometry/triSurface.hpp"
@@ -24,6 +25,14 @@ struct TetMeshRequest {
     double contactSize = 0.0;
     double contactDistance = 0.0;
 };
+
+// The entries of system/feMeshDict (meshRock's readTetRequest) and of its contactRefinement.
+inline const std::vector<std::string>& feMeshDictEntries()
+{
+    static const std::vector<std::string> entries = {"elementSize", "elementCount", "optimise",
+                                                     "contactRefinement"};
+    return entries;
+}
 
 struct TetMeshingResult {
     std::vector<Vec3> nodes;

@@ -40,9 +40,15 @@ const Selector<DecompositionMethod>& decompositionMethods()
     return table;
 }
 
+const std::vector<std::string>& decomposeParDictEntries()
+{
+    static const std::vector<std::string> entries = {"numberOfSubdomains", "method", "weights", "rcb"};
+    return entries;
+}
+
 DecomposeParameters readDecomposeParameters(const Dictionary& dict)
 {
-    requireKnownEntries(dict, {"numberOfSubdomains", "method", "weights", "rcb"});
+    requireKnownEntries(dict, decomposeParDictEntries());
     DecomposeParameters p;
     const double n = dict.getScalar("numberOfSubdomains", Bounds::closed(1, 1 << 20));
     if (n != std::floor(n))

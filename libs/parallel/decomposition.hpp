@@ -41,6 +41,8 @@ struct DecomposeParameters {
 // any missing, out-of-range or unknown entry.
 DecomposeParameters readDecomposeParDict(const std::filesystem::path& caseDir);
 DecomposeParameters readDecomposeParameters(const Dictionary& dict);
+// The entries of system/decomposeParDict (an unknown one is an error, also without -strict).
+const std::vector<std::string>& decomposeParDictEntries();
 
 // The halo of a decomposition. A cell j of another subdomain is a ghost of subdomain p when
 // some cell i of p lies within reach_i + reach_j + margin of it (centroid distance): the

@@ -4,6 +4,7 @@
 // distance pd. pd is a minimum spacing; the cell count is what the user asks
 // for (directly, or through the meso constant V / nCells).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/vec3.hpp"
@@ -33,5 +34,13 @@ void orderAlongMortonCurve(std::vector<Vec3>& points);
 // paper keep 2.2e-7 m^3, that of the 100-cell BDT disc): round(V / mesoConstant).
 // UserError if mesoConstant is not positive or the count does not fit an int.
 int cellCountFromMesoConstant(double domainVolume, double mesoConstant);
+
+// The entries of system/voronoiMeshDict (voronoiMesh's readRequest).
+inline const std::vector<std::string>& voronoiMeshDictEntries()
+{
+    static const std::vector<std::string> entries = {"nCells", "mesoConstant",     "pruningDistance",
+                                                     "seed",   "dilationFraction", "cellOrder"};
+    return entries;
+}
 
 }  // namespace rockfrac

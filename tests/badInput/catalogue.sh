@@ -372,3 +372,67 @@ badCase runCasesNoDict empty "runCasesDict" "" runCases -case . <<'SETUP'
 SETUP
 badCase calibrateNoDict empty "calibrationDict" "" calibrateModel -case . <<'SETUP'
 SETUP
+
+# ---- unknown entries (issue 41 item 8) ---------------------------------------------------------
+# A misspelt entry is a warning by default (it is ignored); -strict makes it this one-line error,
+# with the nearest known entry. caseDict -check lists them and exits 1.
+badCase strictControlDictTypo dem "controlDict" "did you mean 'writeInterval'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+sed -i 's/^writeInterval /writeIntervall /' system/controlDict
+SETUP
+badCase strictControlDictExtra dem "controlDict" "did you mean 'purgeWrite'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+echo 'purgWrite 2;' >> system/controlDict
+SETUP
+badCase strictFunctionName dem "controlDict" "did you mean 'plateForce'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+echo 'functions { plateForc { writeInterval 5; } }' >> system/controlDict
+SETUP
+badCase strictFunctionEntry dem "controlDict" "did you mean 'writeInterval'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+echo 'functions { plateForce { writeIntervall 5; } }' >> system/controlDict
+SETUP
+badCase strictLoadingTop dem "loading" "did you mean 'gravity'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+sed -i 's/^gravity /gravty /' constant/loading
+SETUP
+badCase strictLoadingStop dem "loading" "did you mean 'maxDisplacement'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+sed -i 's/forceDropFraction *0.3;/forceDropFraction 0.3; maxDisplacment 1e-3;/' constant/loading
+SETUP
+badCase strictLoadingPlate dem "loading" "did you mean 'velocity'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+sed -i '0,/normal      (0 0 1);/s//normal (0 0 1); velocty (0 0 0);/' constant/loading
+SETUP
+badCase strictRockPropertiesTop dem "rockProperties" "did you mean 'steel'?" bondedDemFoam -case . -dry-run -strict <<'SETUP'
+echo 'steal { E 1; }' >> constant/rockProperties
+SETUP
+badCase strictFemControlDict fem "controlDict" "did you mean 'massDamping'?" feFractureSolver -case . -dry-run -strict <<'SETUP'
+sed -i 's/^massDamping /massDampng /' system/controlDict
+SETUP
+badCase strictFemLoading fem "loading" "did you mean 'length'?" feFractureSolver -case . -dry-run -strict <<'SETUP'
+sed -i 's/^\( *\)length \( *\)20e-3;/\1lenght\2 20e-3;/' constant/loading
+SETUP
+badCase strictFemCentreStress fem "controlDict" "did you mean 'radius'?" feFractureSolver -case . -dry-run -strict <<'SETUP'
+sed -i 's/^\( *\)plateForce  { writeInterval 20; }/&\n    centreStress { radus 5e-3; }/' system/controlDict
+SETUP
+badCase strictMeshRockDictTop disc "meshRockDict" "did you mean 'disc'?" meshRock -case . -dry-run -strict <<'SETUP'
+echo 'discs { }' >> system/meshRockDict
+SETUP
+badCase strictFeMeshDict femNoMesh "feMeshDict" "did you mean 'optimise'?" meshRock -case . -dry-run -strict <<'SETUP'
+sed -i 's/^optimise /optimize /' system/feMeshDict
+SETUP
+badCase strictVoronoiMeshDict meshed "voronoiMeshDict" "did you mean 'dilationFraction'?" voronoiMesh -case . -dry-run -strict <<'SETUP'
+sed -i 's/^dilationFraction /dilationFration /' system/voronoiMeshDict
+SETUP
+badCase strictMeshCrusherDict crusher "meshCrusherDict" "did you mean 'nSegments'?" meshCrusher -case . -dry-run -strict <<'SETUP'
+sed -i 's/^nSegments /nSegment /' system/meshCrusherDict
+SETUP
+badCase strictCalibrationDict empty "calibrationDict" "did you mean 'model'?" calibrateModel -case . -strict <<'SETUP'
+mkdir -p system; echo 'modle dem;' > system/calibrationDict
+SETUP
+badCase strictRunCasesDict empty "runCasesDict" "did you mean 'template'?" runCases -case . -strict <<'SETUP'
+mkdir -p system; echo 'templte "../case";' > system/runCasesDict
+SETUP
+badCase strictExplainGapDict empty "explainGapDict" "did you mean 'command'?" explainGap -case . -strict <<'SETUP'
+mkdir -p system; echo 'comand "bondedDemFoam";' > system/explainGapDict
+SETUP
+badCase caseDictCheckTypo disc "controlDict" "did you mean 'writeInterval'?" caseDict -case . -check <<'SETUP'
+sed -i 's/^writeInterval /writeIntervall /' system/controlDict
+SETUP
+badCase caseDictCheckLoading dem "loading" "did you mean 'settling'?" caseDict -case . -check <<'SETUP'
+echo 'setling { duration 1e-4; }' >> constant/loading
+SETUP

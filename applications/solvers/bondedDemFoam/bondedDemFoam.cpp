@@ -19,6 +19,7 @@
 #include "core/timeLoop.hpp"
 #include "crusher/crusherRun.hpp"
 #include "crusher/machineLoading.hpp"
+#include "demCase/demCase.hpp"
 #include "demCase/demRun.hpp"
 #include "demCuda/cudaDemModel.hpp"
 
@@ -47,7 +48,8 @@ int main(int argc, char** argv)
         const auto loading = app.path("constant/loading");
         const bool crusher =
             std::filesystem::exists(loading) && isMachineLoading(Dictionary::readFile(loading));
-        TimeLoop loop(app);  // system/controlDict: time and write control
+        // system/controlDict: time and write control, the DEM step, the run's function.
+        TimeLoop loop(app, {demControlEntries(), {crusher ? "machine" : "plateForce"}});
         // Reads and checks every input: plates on a specimen, or a cone crusher.
         const std::unique_ptr<TimedRun> run = crusher ? newCrusherRun(app, loop) : newBondedDemRun(app, loop);
         run->printSetup();

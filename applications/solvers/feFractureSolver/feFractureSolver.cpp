@@ -17,6 +17,7 @@
 //   feFractureSolver -case tutorials/BDT/graniteFEM -dry-run
 #include "core/application.hpp"
 #include "core/timeLoop.hpp"
+#include "femCase/femCase.hpp"
 #include "femCase/femRun.hpp"
 
 using namespace rockfrac;
@@ -41,7 +42,8 @@ const AppInfo info{
 int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
-        TimeLoop loop(app);  // system/controlDict: time and write control
+        // system/controlDict: time and write control, the FEM's step controls, its functions.
+        TimeLoop loop(app, {femControlEntries(), {"plateForce", "centreStress"}});
         const std::unique_ptr<TimedRun> run = newFeFractureRun(app, loop);  // reads and checks every input
         run->printSetup();
         // Until endTime or the stop criterion: per step the stage, the step, the rows and

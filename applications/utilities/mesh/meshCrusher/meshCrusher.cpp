@@ -20,6 +20,7 @@
 #include "core/application.hpp"
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
+#include "core/knownEntries.hpp"
 #include "geometry/crusherGeometry.hpp"
 #include "io/foamFile.hpp"
 #include "io/vtkOutput.hpp"
@@ -57,6 +58,9 @@ Profile readProfile(const Dictionary& d, const std::string& key)
 
 ChamberSpec readSpec(const Dictionary& d)
 {
+    checkKnownEntries(d, meshCrusherDictEntries());
+    checkKnownSubEntries(d, "mantle", {"profile"});
+    checkKnownSubEntries(d, "concave", {"profile"});
     static const Dimensions metre = Dimensions::fromUnits("m");
     ChamberSpec s;
     s.mantle = readProfile(d, "mantle/profile");

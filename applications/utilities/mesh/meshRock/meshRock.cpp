@@ -15,6 +15,7 @@
 
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
+#include "core/knownEntries.hpp"
 #include "core/memoryLimit.hpp"
 #include "geometry/specimen.hpp"
 #include "geometry/tetMesher.hpp"
@@ -54,6 +55,8 @@ void report(const Specimen& s)
 
 TetMeshRequest readTetRequest(const Dictionary& d)
 {
+    checkKnownEntries(d, feMeshDictEntries());
+    checkKnownSubEntries(d, "contactRefinement", {"elementSize", "distance"});
     TetMeshRequest r;
     if (d.found("elementSize")) r.elementSize = d.getScalar("elementSize", Bounds::positive());
     if (d.found("elementCount")) {

@@ -11,6 +11,7 @@
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/memoryLimit.hpp"
 #include "geometry/specimen.hpp"
 #include "io/vtkOutput.hpp"
@@ -44,6 +45,7 @@ struct MeshRequest {
 
 MeshRequest readRequest(const Dictionary& d, double domainVolume)
 {
+    checkKnownEntries(d, voronoiMeshDictEntries());
     MeshRequest r;
     if (d.found("nCells") == d.found("mesoConstant"))
         throw UserError(d.fileName() + ": give exactly one of 'nCells' (a count) or 'mesoConstant' " +

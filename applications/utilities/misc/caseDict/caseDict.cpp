@@ -10,8 +10,10 @@
 //   caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set 28e6
 //   caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment "from BDT series 3"
 //   caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove
+//   caseDict -case tutorials/BDT/granite -check
 #include <iostream>
 
+#include "caseCheck.hpp"
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
@@ -25,15 +27,18 @@ const AppInfo info = {
     "Print or edit a case dictionary. Without -entry, prints the whole dictionary in canonical form with "
     "#include, $macros and #eval expanded. With -entry, prints that entry (-value: only its value); -set, "
     "-add "
-    "and -remove change the file in place, atomically, keeping comments and layout.",
-    "[options] <dictionary file, relative to the case>",
+    "and -remove change the file in place, atomically, keeping comments and layout. -check (no file) checks "
+    "the case's dictionaries for entries no application reads (misspelt ones): it lists each with its "
+    "file:line and the nearest known entry and exits 1, or exits 0 when there is none.",
+    "[options] <dictionary file, relative to the case> | -check",
     {"caseDict -case tutorials/BDT/granite constant/rockProperties",
      "caseDict constant/rockProperties -keywords",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -value",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/tensileStrength -set 28e6",
      "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -add 5e6 -comment \"from BDT series "
      "3\"",
-     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove"},
+     "caseDict constant/rockProperties -entry bond/voronoiQNSC/cohesion -remove",
+     "caseDict -case tutorials/BDT/granite -check"},
     {
         {"-entry", "key", "select an entry by its slash path, e.g. bond/voronoiQNSC/tensileStrength"},
         {"-value", "", "print only the value of the entry"},
@@ -44,8 +49,10 @@ const AppInfo info = {
         {"-comment", "text", "with -set or -add: write '// text' after the entry"},
         {"-expand", "",
          "print with #include, $macros and #eval expanded (always done; for foamDictionary users)"},
+        {"-check", "",
+         "check the case's dictionaries for unknown (misspelt) top-level entries; exit 1 listing them"},
     },
-    1,
+    0,
     1,
     false,
 };
@@ -94,8 +101,29 @@ void printEntry(const Application& app, const Dictionary& dict, const std::optio
         std::cout << valueText(entry) << "\n";
 }
 
+int check(const Application& app)
+{
+    if (!app.args().empty())
+        throw UserError("-check checks the whole case (-case <dir>); give no dictionary file with it");
+    const std::vector<std::string> problems = checkCaseDictionaries(app.casePath());
+    for (const std::string& p : problems) std::cout << p << "\n";
+    if (problems.empty()) {
+        std::cout << "No unknown entries in the dictionaries of " << app.casePath().string() << "\n";
+        return exitSuccess;
+    }
+    throw UserError(problems.front() +
+                    (problems.size() == 1
+                         ? ""
+                         : " (and " + std::to_string(problems.size() - 1) + " more, listed on the output)") +
+                    "; correct or remove it (caseDict -check)");
+}
+
 int run(Application& app)
 {
+    if (app.has("-check")) return check(app);
+    if (app.args().empty())
+        throw UserError("expected a dictionary file, relative to the case (or -check); usage: caseDict " +
+                        app.info().usage);
     const std::filesystem::path file = app.path(app.args().front());
     const std::optional<std::string> key = app.optionIf("-entry");
     const int edits = app.has("-set") + app.has("-add") + app.has("-remove");

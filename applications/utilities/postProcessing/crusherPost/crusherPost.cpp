@@ -14,6 +14,8 @@
 #include "core/application.hpp"
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
+#include "core/knownEntries.hpp"
+#include "crusher/machineLoading.hpp"
 #include "fragments/psd.hpp"
 #include "io/timeSeries.hpp"
 #include "plot/gnuplot.hpp"
@@ -70,6 +72,7 @@ int main(int argc, char** argv)
 {
     return runApplication(info, argc, argv, [](Application& app) {
         const Dictionary dict = Dictionary::readFile(app.path("system/crusherPostDict"));
+        checkKnownEntries(dict, crusherPostDictEntries());
         const double steadyStart = dict.getScalar("steadyStart", Bounds::nonNegative());
         const double pistonArea = dict.getScalar("pistonArea", Bounds::positive());
         const double css = Dictionary::readFile(app.path("constant/crusherKinematics"))

@@ -4,9 +4,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "calibration/calibrationStudy.hpp"
 #include "core/dictionary.hpp"
 #include "core/dictionaryEditor.hpp"
 #include "core/error.hpp"
+#include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "stats/design.hpp"
 
@@ -56,6 +58,7 @@ Parameter readParameter(const Entry& entry, const fs::path& templateCase)
                         "' must be a dictionary, e.g. '" + entry.keyword +
                         " { file constant/rockProperties; entry bond/voronoiQNSC/E; values (40e9 46e9); }'");
     const Dictionary& dict = *entry.dict;
+    checkKnownEntries(dict, {"file", "entry", "unit", "values", "range"});
     Parameter parameter;
     parameter.name = entry.keyword;
     parameter.target = readTarget(dict, "parameter '" + entry.keyword + "'", templateCase);
@@ -86,6 +89,7 @@ Result readResult(const Entry& entry)
                         "' must be a dictionary, e.g. '" + entry.keyword +
                         " { file \"postProcessing/summary/0/summary.dat\"; column peakForce; }'");
     const Dictionary& dict = *entry.dict;
+    checkKnownEntries(dict, {"file", "unit", "column", "select", "entry"});
     Result result;
     result.name = entry.keyword;
     result.file = dict.get<std::string>("file");
@@ -194,6 +198,7 @@ Study readStudy(const fs::path& studyDirectory)
         throw UserError("no '" + study.dictionary.string() +
                         "'; a study directory holds system/runCasesDict (see runCases -help)");
     const Dictionary dict = Dictionary::readFile(study.dictionary);
+    checkKnownEntries(dict, calibration::runCasesDictEntries());
     study.templateCase = studyDirectory / dict.get<std::string>("template");
     if (!fs::is_directory(study.templateCase))
         throw UserError(dict.location("template").str() + ": template case '" + study.templateCase.string() +
@@ -205,6 +210,7 @@ Study readStudy(const fs::path& studyDirectory)
             study.parameters.push_back(readParameter(entry, study.templateCase));
     if (dict.found("seeds")) {
         const Dictionary& seeds = dict.subDict("seeds");
+        checkKnownEntries(seeds, {"file", "entry", "values"});
         study.seedTarget = readTarget(seeds, "seeds", study.templateCase);
         study.seeds = readValueTexts(seeds, "values");
     }
