@@ -33,15 +33,19 @@ std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& s)
            perFaceVertex * s.nFaceVertices + perBondedFace * s.nBondedFaces + perBond * s.nBonds;
 }
 
-// Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp).
-void checkDemMemory(const fs::path& caseDir)
+// Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp); under -dry-run,
+// print the estimate.
+void checkDemMemory(const fs::path& caseDir, bool dryRun)
 {
     const VoronoiMeshSizes sizes = readVoronoiMeshSizes(caseDir);
+    const std::string counts =
+        std::to_string(sizes.nCells) + " cells, " + std::to_string(sizes.nBonds) + " bonds";
     checkMemoryFits(estimateDemMemoryBytes(sizes),
                     (caseDir / voronoiMeshDirectory / "meshInfo").lexically_normal().string() + ": " +
                         std::to_string(sizes.nCells) + " cells and " + std::to_string(sizes.nBonds) +
                         " bonds",
                     "use fewer cells (nCells of system/voronoiMeshDict) or a machine with more memory");
+    if (dryRun) std::printf("%s\n", estimateLine(estimateDemMemoryBytes(sizes), counts).c_str());
 }
 
 }  // namespace
@@ -253,7 +257,7 @@ BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop) : TimedRun(loop
     if (!fs::exists(a.path("constant/voronoiMesh/meshInfo")))
         throw UserError("missing " + a.path("constant/voronoiMesh").string() +
                         "; run voronoiMesh first to make the bonded cells");
-    checkDemMemory(a.casePath());
+    checkDemMemory(a.casePath(), a.dryRun());
     mesh = readVoronoiMesh(a.casePath());
     model = std::make_unique<DemModel>(mesh, parameters);
     shapes = captureCellShapes(mesh, *model);
