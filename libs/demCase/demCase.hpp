@@ -56,6 +56,12 @@ void writeDemVtk(const std::filesystem::path& caseDir, int index, const DemModel
 class Dictionary;
 bool readCudaBackend(const Dictionary& controlDict);
 
+// Peak memory [bytes] of a DEM run on a mesh of these sizes: the mesh as read, the model's
+// arrays, neighbour and contact lists, the code and libraries (an upper estimate;
+// docs/reliability.md compares it with measured peaks).
+struct VoronoiMeshSizes;
+std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& sizes);
+
 // Whole state (cells, bonds, contacts, walls, clock, energies) of a model.
 void writeDemState(const std::filesystem::path& file, const DemModel& model, long step, double peakForce,
                    bool loadingStarted);

@@ -18,8 +18,6 @@ namespace rockfrac {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 // Bytes the run holds per mesh item: the VoronoiMesh as read (with its file
 // buffers), the DemModel's cell, interface and bond arrays (DemModel::memoryBytes
 // itemises them), and a generous share of neighbour and contact lists per cell;
@@ -32,6 +30,8 @@ std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& s)
     return libraries + perCell * s.nCells + perVertex * s.nVertices + perFace * s.nFaces +
            perFaceVertex * s.nFaceVertices + perBondedFace * s.nBondedFaces + perBond * s.nBonds;
 }
+
+namespace {
 
 // Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp); under -dry-run,
 // print the estimate.

@@ -67,6 +67,12 @@ crusherPost -dry-run > "$work/crusherPost.dryRun" || fail "crusherPost -dry-run 
 grep -q "^Dry run: nothing written" "$work/crusherPost.dryRun" || fail "crusherPost -dry-run: no closing line"
 [ ! -e postProcessing/crusherPost/summary.dat ] || fail "crusherPost -dry-run wrote summary.dat"
 mv "$work/summary.dat" postProcessing/crusherPost/summary.dat
+# The feed's memory estimate (5 rocks of the smallest size at most: 150 cells), and a machine
+# too small for it refused before any cell exists (there was no estimate for the crusher).
+bondedDemFoam -dry-run | grep -q "^Estimate: up to 150 cells, 3380 bonds (5 feed rocks), ~" ||
+    fail "bondedDemFoam -dry-run: no feed estimate line"
+(export ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 && expectUserError "needs an estimated" bondedDemFoam -dry-run) ||
+    fail "the crusher's dry run did not refuse a 1 MB machine"
 
 # Bad input: free spin without the bearing drag, or with an inertia in the wrong unit.
 for broken in "remove bearingDamping" "unit"; do
