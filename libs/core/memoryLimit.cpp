@@ -1,5 +1,6 @@
 #include "core/memoryLimit.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -30,8 +31,9 @@ std::optional<MemoryBudget> memoryBudget()
 {
     if (const char* text = std::getenv(limitVariable); text && *text) {
         char* end = nullptr;
+        errno = 0;
         const unsigned long long value = std::strtoull(text, &end, 10);
-        if (*end != '\0' || text[0] == '-')
+        if (*end != '\0' || text[0] == '-' || errno == ERANGE)
             throw UserError(std::string(limitVariable) + "='" + text +
                             "' is not a number of bytes; unset it or give e.g. 8000000000");
         return MemoryBudget{value, limitVariable};
@@ -47,6 +49,14 @@ void checkMemoryFits(std::uint64_t estimatedBytes, const std::string& what, cons
     throw UserError(what + ": the run needs an estimated " + formatBytes(estimatedBytes) +
                     " of memory, only " + formatBytes(budget->bytes) + " are available (" + budget->source +
                     "); " + advice);
+}
+
+std::string estimateLine(std::uint64_t estimatedBytes, const std::string& counts)
+{
+    const auto budget = memoryBudget();
+    return "Estimate: " + counts + ", ~" + formatBytes(estimatedBytes) + " peak memory; " +
+           (budget ? "available " + formatBytes(budget->bytes) + " (" + budget->source + ")"
+                   : std::string("available: unknown (no ROCKFRAC_MEMORY_LIMIT_BYTES, no /proc/meminfo)"));
 }
 
 std::string formatBytes(std::uint64_t bytes)

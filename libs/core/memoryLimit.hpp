@@ -7,6 +7,8 @@
 // limit, or a test faking a small machine), else MemAvailable of
 // /proc/meminfo. A case that would not fit stops with a UserError giving the
 // estimate, instead of being killed by the kernel half-way (or swapping).
+// Under -dry-run each application prints its estimate (estimateLine) after
+// the check, so a dry run refuses what the run would refuse.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +27,11 @@ std::optional<MemoryBudget> memoryBudget();
 // UserError "<what>: needs an estimated X of memory, only Y available (source);
 // <advice>" when `estimatedBytes` exceeds the budget.
 void checkMemoryFits(std::uint64_t estimatedBytes, const std::string& what, const std::string& advice);
+
+// The -dry-run line: "Estimate: <counts>, ~X peak memory; available Y (source)",
+// e.g. "Estimate: 119600 cells, ~1.91 GB peak memory; available 20.1 GB (MemAvailable in
+// /proc/meminfo)"; "available: unknown" when the budget cannot be told.
+std::string estimateLine(std::uint64_t estimatedBytes, const std::string& counts);
 
 // "1.23 GB", "456 MB", "789 kB" (powers of 1000).
 std::string formatBytes(std::uint64_t bytes);

@@ -6,6 +6,7 @@
 
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
+#include "core/memoryLimit.hpp"
 #include "crusher/destructor.hpp"
 #include "crusher/feedRock.hpp"
 #include "crusher/machineLoading.hpp"
@@ -84,6 +85,29 @@ RevolvedLiner addLiner(DemModel& model, const fs::path& stl, const WallMotion& m
     const TriSurface surface = readStl(stl);
     const int wall = model.addTriSurface(surface.points, surface.triangles, motion);
     return revolvedLiner(surface, wall, facing, stl.string());
+}
+
+// The most the feed brings by endTime: massRate x endTime (at most totalMass) in rocks of the
+// smallest size, one more for the last rock's overshoot, each a copy of the template rock; as
+// if none left (an upper estimate). Refused before any cell exists when it cannot fit;
+// returns the -dry-run line.
+std::string checkFeedMemory(const fs::path& loadingFile, const FeedSpec& feed, double endTime,
+                            double smallestRockMass)
+{
+    double mass = feed.mass_rate * endTime;
+    if (feed.total_mass > 0) mass = std::min(mass, feed.total_mass);
+    const auto rocks = static_cast<std::uint64_t>(std::min(std::floor(mass / smallestRockMass) + 1.0, 1e7));
+    const VoronoiMeshSizes one = readVoronoiMeshSizes(feed.rock_case);
+    const VoronoiMeshSizes all{one.nCells * rocks,        one.nVertices * rocks,    one.nFaces * rocks,
+                               one.nFaceVertices * rocks, one.nBondedFaces * rocks, one.nBonds * rocks};
+    const std::uint64_t bytes = estimateDemMemoryBytes(all);
+    const std::string counts = "up to " + std::to_string(all.nCells) + " cells, " +
+                               std::to_string(all.nBonds) + " bonds (" + std::to_string(rocks) +
+                               " feed rocks)";
+    checkMemoryFits(bytes,
+                    loadingFile.string() + ": feed of " + formatNumber(mass) + " kg by endTime, " + counts,
+                    "feed less (feed/massRate or feed/totalMass) or stop earlier (endTime)");
+    return estimateLine(bytes, counts);
 }
 
 // The crusher's run: reads and checks every input in its constructor (UserError before
@@ -169,6 +193,11 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop) : TimedRun(loop), a
     const DemModel probe(factory->smallestRock(), parameters);
     rayleighStep = probe.rayleighTimeStep();
     critical = probe.criticalTimeStep();
+    double smallestRockMass = 0.0;
+    for (double m : probe.cells().mass) smallestRockMass += m;
+    const std::string estimate =
+        checkFeedMemory(a.path("constant/loading"), loading.feed, runTime.endTime(), smallestRockMass);
+    if (a.dryRun()) std::printf("%s\n", estimate.c_str());
     chooseDemTimeStep(controlDict, runTime, rayleighStep, critical, "the smallest feed rock");
     // Steps too long for a cell pressed into many contact points are split (DemModel::step).
     model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,

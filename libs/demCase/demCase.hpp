@@ -63,6 +63,12 @@ bool readCudaBackend(const Dictionary& controlDict);
 // backend and the time step's rayleighFraction / criticalFraction (chooseDemTimeStep).
 const std::vector<std::string>& demControlEntries();
 
+// Peak memory [bytes] of a DEM run on a mesh of these sizes: the mesh as read, the model's
+// arrays, neighbour and contact lists, the code and libraries (an upper estimate;
+// docs/reliability.md compares it with measured peaks).
+struct VoronoiMeshSizes;
+std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& sizes);
+
 // Whole state (cells, bonds, contacts, walls, clock, energies) of a model.
 void writeDemState(const std::filesystem::path& file, const DemModel& model, long step, double peakForce,
                    bool loadingStarted);

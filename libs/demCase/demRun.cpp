@@ -18,8 +18,6 @@ namespace rockfrac {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 // Bytes the run holds per mesh item: the VoronoiMesh as read (with its file
 // buffers), the DemModel's cell, interface and bond arrays (DemModel::memoryBytes
 // itemises them), and a generous share of neighbour and contact lists per cell;
@@ -33,15 +31,21 @@ std::uint64_t estimateDemMemoryBytes(const VoronoiMeshSizes& s)
            perFaceVertex * s.nFaceVertices + perBondedFace * s.nBondedFaces + perBond * s.nBonds;
 }
 
-// Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp).
-void checkDemMemory(const fs::path& caseDir)
+namespace {
+
+// Refuse a mesh that cannot fit before reading it (core/memoryLimit.hpp); under -dry-run,
+// print the estimate.
+void checkDemMemory(const fs::path& caseDir, bool dryRun)
 {
     const VoronoiMeshSizes sizes = readVoronoiMeshSizes(caseDir);
+    const std::string counts =
+        std::to_string(sizes.nCells) + " cells, " + std::to_string(sizes.nBonds) + " bonds";
     checkMemoryFits(estimateDemMemoryBytes(sizes),
                     (caseDir / voronoiMeshDirectory / "meshInfo").lexically_normal().string() + ": " +
                         std::to_string(sizes.nCells) + " cells and " + std::to_string(sizes.nBonds) +
                         " bonds",
                     "use fewer cells (nCells of system/voronoiMeshDict) or a machine with more memory");
+    if (dryRun) std::printf("%s\n", estimateLine(estimateDemMemoryBytes(sizes), counts).c_str());
 }
 
 }  // namespace
@@ -261,7 +265,7 @@ BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop) : TimedRun(loop
     if (!fs::exists(a.path("constant/voronoiMesh/meshInfo")))
         throw UserError("missing " + a.path("constant/voronoiMesh").string() +
                         "; run voronoiMesh first to make the bonded cells");
-    checkDemMemory(a.casePath());
+    checkDemMemory(a.casePath(), a.dryRun());
     mesh = readVoronoiMesh(a.casePath());
     model = std::make_unique<DemModel>(mesh, parameters);
     shapes = captureCellShapes(mesh, *model);

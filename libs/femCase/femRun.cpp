@@ -145,6 +145,10 @@ private:
             msh.string() + ": " + std::to_string(mesh.numNodes()) + " nodes and " +
                 std::to_string(mesh.numTets()) + " tetrahedra",
             "use a coarser mesh (elementSize of system/feMeshDict) or a machine with more memory");
+        if (app.dryRun())
+            std::printf("%s\n", estimateLine(estimate, std::to_string(mesh.numNodes()) + " nodes, " +
+                                                           std::to_string(mesh.numTets()) + " tetrahedra")
+                                    .c_str());
     }
 
     void readSolverControls()

@@ -21,6 +21,41 @@ double Specimen::equivalentDiameter() const
 
 namespace {
 
+// Where plane `index` of the convexHull's `planes` list starts (its opening parenthesis),
+// or the entry's location when the list is not written as nested parentheses.
+SourceLocation planeLocation(const Dictionary& hull, std::size_t index)
+{
+    int depth = 0;
+    std::size_t seen = 0;
+    for (const Token& t : hull.tokens("planes")) {
+        if (t.isPunctuation(')')) --depth;
+        if (!t.isPunctuation('(')) continue;
+        if (++depth == 2 && seen++ == index) return t.where;
+    }
+    return hull.location("planes");
+}
+
+// A hull plane n.x <= c must keep the specimen's centroid inside: a plane with the centroid
+// on its outer side has its normal pointing into the rock, which leaves nothing to mesh.
+void checkPlaneFacesOutward(const Dictionary& hull, std::size_t index, const HalfSpace& plane,
+                            const Vec3& centroid)
+{
+    if (dot(plane.normal, centroid) < plane.offset) return;
+    throw UserError(planeLocation(hull, index).str() + ": convexHull/planes: plane " + std::to_string(index) +
+                    " has the specimen's centroid on its outer side, so its normal points into the rock and "
+                    "the hull is empty; flip its normal (negate all four values nx ny nz c) or run meshRock "
+                    "again to remake the specimen");
+}
+
+// Total area of the triangles.
+double surfaceArea(const TriSurface& s)
+{
+    double area = 0;
+    for (const auto& t : s.triangles)
+        area += 0.5 * norm(cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]]));
+    return area;
+}
+
 // Exact mass properties of a solid cylinder with its axis along y.
 MassProperties discProperties(double diameter, double thickness, const Vec3& centre)
 {
@@ -144,9 +179,15 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
     const Vec3 translation = d.getOrDefault<Vec3>("translate", Vec3{});
     transformSurface(scan, scale, rotation, translation);
     const double scanVolume = massProperties(scan).volume;
+    // A closed surface of area A encloses at most A^1.5 / (6 sqrt(pi)) (a sphere): one that
+    // encloses next to nothing is flat, whichever way its triangles face.
+    if (!(std::abs(scanVolume) > 1e-9 * std::pow(surfaceArea(scan), 1.5)))
+        throw UserError(file.string() +
+                        ": the scan is flat: it encloses no volume (its triangles lie in one plane, or a "
+                        "sheet covers itself on both sides); export the rock as a closed solid");
     if (!(scanVolume > 0))
         throw UserError(file.string() +
-                        ": the scan encloses no volume (inward-facing triangles?); "
+                        ": the scan encloses a negative volume (inward-facing triangles); "
                         "flip its normals and export it again");
     Specimen s = fromHull(convexHull(scan.points), "stl");
     s.scan = std::move(scan);
@@ -265,6 +306,7 @@ Specimen readSpecimen(const fs::path& caseDir)
                     std::to_string(s.planes.size()) +
                     " has a zero or non-finite normal; run meshRock again to remake the specimen");
             s.planes.push_back({normalised(normal), row[3]});
+            checkPlaneFacesOutward(hull, s.planes.size() - 1, s.planes.back(), s.properties.centroid);
         }
         if (s.planes.size() < 4) throw UserError(file.string() + ": a convex hull needs at least 4 planes");
     }

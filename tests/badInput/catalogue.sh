@@ -435,4 +435,112 @@ sed -i 's/^writeInterval /writeIntervall /' system/controlDict
 SETUP
 badCase caseDictCheckLoading dem "loading" "did you mean 'settling'?" caseDict -case . -check <<'SETUP'
 echo 'setling { duration 1e-4; }' >> constant/loading
+# ---- estimates and messages (issue 41 items 3 and 7) ----------------------------------------
+# A generated rock (a convex hull) after meshRock, and awk editing plane 0 of its
+# geometryProperties: $1 the awk expression printing the new plane from $1..$4.
+hullRock='cat > system/meshRockDict <<D
+FoamFile { format ascii; class dictionary; object meshRockDict; }
+geometry generated;
+generated { volume 43.6e-6; seed 107; placeOnPlate yes; }
+D
+meshRock -case .'
+editPlane0='editPlane0() { awk -v OFS=" " "f==2 { gsub(/[()]/, \"\"); printf \"        (\"; printf $1; print \")\"; f=3; next } /^ *planes/ { f=1 } f==1 && /^ *\\(\$/ { f=2 } { print }" constant/geometryProperties > g && mv g constant/geometryProperties; }'
+# Every application refuses a machine too small for its estimate, with -dry-run too.
+badCase surfaceMemoryLimit disc "meshRockDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 meshRock -case . <<'SETUP'
+SETUP
+badCase dryRunSurfaceLimit disc "meshRockDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 meshRock -case . -dry-run <<'SETUP'
+SETUP
+badCase dryRunTetsLimit femNoMesh "feMeshDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 meshRock -case . -dry-run <<'SETUP'
+SETUP
+badCase dryRunVoronoiLimit meshed "voronoiMeshDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 voronoiMesh -case . -dry-run <<'SETUP'
+SETUP
+badCase dryRunDemLimit dem "meshInfo" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 bondedDemFoam -case . -dry-run <<'SETUP'
+SETUP
+badCase dryRunFemLimit fem "specimen.msh" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 feFractureSolver -case . -dry-run <<'SETUP'
+SETUP
+badCase psdMemoryLimit demRun "meshInfo" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 fragmentPSD -case . <<'SETUP'
+SETUP
+badCase dryRunPsdLimit demRun "meshInfo" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 fragmentPSD -case . -dry-run <<'SETUP'
+SETUP
+badCase crusherMemoryLimit crusher "meshCrusherDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 meshCrusher -case . <<'SETUP'
+SETUP
+badCase dryRunCrusherLimit crusher "meshCrusherDict" "needs an estimated" env ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 meshCrusher -case . -dry-run <<'SETUP'
+SETUP
+badCase crusherSegmentsHuge crusher "meshCrusherDict" "use fewer nSegments" meshCrusher -case . <<'SETUP'
+caseDict -case . system/meshCrusherDict -entry nSegments -set 1000000
+SETUP
+badCase crusherSegmentsIntMax crusher "meshCrusherDict" "use fewer nSegments" meshCrusher -case . -dry-run <<'SETUP'
+caseDict -case . system/meshCrusherDict -entry nSegments -set 2147483647
+SETUP
+badCase memoryLimitZero meshed "voronoiMeshDict" "only 0 bytes are available (ROCKFRAC_MEMORY_LIMIT_BYTES)" env ROCKFRAC_MEMORY_LIMIT_BYTES=0 voronoiMesh -case . <<'SETUP'
+SETUP
+badCase memoryLimitNegative meshed "ROCKFRAC_MEMORY_LIMIT_BYTES" "not a number" env ROCKFRAC_MEMORY_LIMIT_BYTES=-5 voronoiMesh -case . -dry-run <<'SETUP'
+SETUP
+badCase memoryLimitOverflow meshed "ROCKFRAC_MEMORY_LIMIT_BYTES" "not a number" env ROCKFRAC_MEMORY_LIMIT_BYTES=99999999999999999999999 voronoiMesh -case . -dry-run <<'SETUP'
+SETUP
+# A hull plane turned inside out names its line and says to flip it (it blamed
+# voronoiMeshDict: "0 cell(s) requested").
+badCase hullPlaneFlipped meshed "geometryProperties:30:" "flip its normal" voronoiMesh -case . <<SETUP
+$hullRock
+$editPlane0
+editPlane0 '"%.17g %.17g %.17g %.17g", -\$1, -\$2, -\$3, -\$4'
+SETUP
+badCase hullPlaneFlippedDryRun meshed "geometryProperties:30:" "flip its normal" voronoiMesh -case . -dry-run <<SETUP
+$hullRock
+$editPlane0
+editPlane0 '"%.17g %.17g %.17g %.17g", -\$1, -\$2, -\$3, -\$4'
+SETUP
+# Its normal negated but not its offset: another (smaller) rock was meshed without a word.
+badCase hullPlaneNormalNegated meshed "geometryProperties" "were changed after meshRock" voronoiMesh -case . <<SETUP
+$hullRock
+$editPlane0
+editPlane0 '"%.17g %.17g %.17g %.17g", -\$1, -\$2, -\$3, \$4'
+SETUP
+badCase hullPlaneMoved meshed "geometryProperties" "were changed after meshRock" voronoiMesh -case . <<SETUP
+$hullRock
+$editPlane0
+editPlane0 '"%.17g %.17g %.17g %.17g", \$1, \$2, \$3, 0.8 * \$4'
+SETUP
+badCase hullVolumeEdited meshed "geometryProperties" "were changed after meshRock" voronoiMesh -case . <<SETUP
+$hullRock
+caseDict -case . constant/geometryProperties -entry volume -set 5e-5
+SETUP
+badCase hullPlaneThreeValues meshed "geometryProperties" "4 values" voronoiMesh -case . <<SETUP
+$hullRock
+$editPlane0
+editPlane0 '"%.17g %.17g %.17g", \$1, \$2, \$3'
+SETUP
+badCase hullThreePlanes meshed "geometryProperties" "at least 4 planes" voronoiMesh -case . <<'SETUP'
+cat > constant/geometryProperties <<D
+FoamFile { format ascii; class dictionary; object geometryProperties; }
+type convexHull; source generated; volume 1e-6; centroid (0 0 0);
+inertia (1e-12 0 0 0 1e-12 0 0 0 1e-12); principalExtents (0.01 0.01 0.01);
+boundsMin (-0.005 -0.005 -0.005); boundsMax (0.005 0.005 0.005);
+convexHull { planes ( (1 0 0 0.005) (0 1 0 0.005) (0 0 1 0.005) ); }
+D
+SETUP
+badCase hullUnbounded meshed "geometryProperties" "bounded" voronoiMesh -case . <<'SETUP'
+cat > constant/geometryProperties <<D
+FoamFile { format ascii; class dictionary; object geometryProperties; }
+type convexHull; source generated; volume 1e-6; centroid (0 0 0);
+inertia (1e-12 0 0 0 1e-12 0 0 0 1e-12); principalExtents (0.01 0.01 0.01);
+boundsMin (-0.005 -0.005 -0.005); boundsMax (0.005 0.005 0.005);
+convexHull { planes ( (1 0 0 0.005) (-1 0 0 0.005) (0 1 0 0.005) (0 -1 0 0.005) (0 0 1 0.005) ); }
+D
+SETUP
+# A flat STL is told it is flat (it was told to flip its normals); an inside-out one to flip them.
+badCase stlFlatSheet disc "rock.stl" "the scan is flat" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid sheet"; facet "0 0 0" "10 0 0" "0 10 0"; facet "0 0 0" "0 10 0" "10 0 0"; echo "endsolid sheet"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlFlatTetrahedron disc "rock.stl" "the scan is flat" meshRock -case . -dry-run <<SETUP
+$stlDict
+$facetFn
+{ echo "solid flat"; facet "0 0 0" "0 10 0" "10 0 0"; facet "0 0 0" "10 0 0" "10 10 0"; facet "0 0 0" "10 10 0" "0 10 0"; facet "10 0 0" "0 10 0" "10 10 0"; echo "endsolid flat"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlInsideOut disc "rock.stl" "flip its normals" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid inverted"; facet "0 0 0" "10 0 0" "0 10 0"; facet "0 0 0" "0 0 10" "10 0 0"; facet "0 0 0" "0 10 0" "0 0 10"; facet "10 0 0" "0 0 10" "0 10 0"; echo "endsolid inverted"; } > constant/triSurface/rock.stl
 SETUP

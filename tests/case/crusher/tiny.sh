@@ -61,6 +61,19 @@ awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) { n = $i; sub(/ \[.*/, "", n); s
           if (d > 1e-9 * (drive < 0 ? -drive : drive) + 1e-15) { print "FAIL: drive work != wall work + spin energy + bearing loss"; exit 1 } }' \
     postProcessing/machine/0/machine.dat || fail "spin books"
 
+# crusherPost -dry-run prints the summary and writes nothing (it wrote summary.dat).
+mv postProcessing/crusherPost/summary.dat "$work/summary.dat"
+crusherPost -dry-run > "$work/crusherPost.dryRun" || fail "crusherPost -dry-run failed"
+grep -q "^Dry run: nothing written" "$work/crusherPost.dryRun" || fail "crusherPost -dry-run: no closing line"
+[ ! -e postProcessing/crusherPost/summary.dat ] || fail "crusherPost -dry-run wrote summary.dat"
+mv "$work/summary.dat" postProcessing/crusherPost/summary.dat
+# The feed's memory estimate (5 rocks of the smallest size at most: 150 cells), and a machine
+# too small for it refused before any cell exists (there was no estimate for the crusher).
+bondedDemFoam -dry-run | grep -q "^Estimate: up to 150 cells, 3380 bonds (5 feed rocks), ~" ||
+    fail "bondedDemFoam -dry-run: no feed estimate line"
+(export ROCKFRAC_MEMORY_LIMIT_BYTES=1000000 && expectUserError "needs an estimated" bondedDemFoam -dry-run) ||
+    fail "the crusher's dry run did not refuse a 1 MB machine"
+
 # Bad input: free spin without the bearing drag, or with an inertia in the wrong unit.
 for broken in "remove bearingDamping" "unit"; do
     rm -rf "$work/bad" && cp -r "$work/tiny" "$work/bad" && rm -rf "$work/bad"/[0-9]* "$work/bad/postProcessing"

@@ -21,6 +21,7 @@
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/knownEntries.hpp"
+#include "core/memoryLimit.hpp"
 #include "geometry/crusherGeometry.hpp"
 #include "io/foamFile.hpp"
 #include "io/vtkOutput.hpp"
@@ -101,6 +102,35 @@ std::string kinematicsText(const ChamberDesign& d, const ChamberSpec& s)
     return t;
 }
 
+// Triangles of revolveProfileShaped, from above: rows of near-equilateral triangles whose
+// circumferential spacing is 2 pi max(r, r_max/2) / nSegments, so each profile segment of
+// length L gets at most L nSegments / (0.87 pi r_max) + 1 rows of 2 nSegments triangles.
+double revolvedTriangles(const Profile& profile, int nSegments)
+{
+    double rMax = 0.0, rows = 0.0;
+    for (const auto& p : profile) rMax = std::max(rMax, p.r);
+    for (std::size_t p = 0; p + 1 < profile.size(); ++p)
+        rows += std::hypot(profile[p + 1].r - profile[p].r, profile[p + 1].z - profile[p].z) * nSegments /
+                    (0.87 * pi * rMax) +
+                1.0;
+    return 2.0 * nSegments * rows;
+}
+
+// Refuse liners that cannot fit before they are made. Measured peaks (docs/reliability.md):
+// 176 018 triangles 28 MB, 17 650 242 triangles 1.05 GB (59 bytes each, with the output).
+// Returns the -dry-run line.
+std::string checkLinerMemory(const Dictionary& dict, const ChamberDesign& design, int nSegments)
+{
+    const double triangles = revolvedTriangles(design.chamber.mantle, nSegments) +
+                             revolvedTriangles(design.chamber.concave, nSegments);
+    const auto bytes = static_cast<std::uint64_t>(30e6 + 80.0 * std::min(triangles, 1e15));
+    const std::string counts = "about " + formatNumber(std::round(triangles)) + " liner triangles";
+    const std::string where = dict.found("nSegments") ? dict.location("nSegments").str() : dict.fileName();
+    checkMemoryFits(bytes, where + ": nSegments " + std::to_string(nSegments) + ", " + counts,
+                    "use fewer nSegments (360 is one degree)");
+    return estimateLine(bytes, counts);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -118,6 +148,7 @@ int main(int argc, char** argv)
         } catch (const UserError& e) {
             throw UserError(dict.fileName() + ": " + e.what());
         }
+        const std::string estimate = checkLinerMemory(dict, design, n_segments);
         const TriSurface mantle =
             revolveProfileShaped(design.chamber.mantle, n_segments, SurfaceFacing::awayFromAxis);
         const TriSurface concave =
@@ -143,7 +174,7 @@ int main(int argc, char** argv)
         std::printf("Feed opening (upper rim of the concave): closed side %.1f mm, open side %.1f mm\n",
                     1e3 * g.feed_closed, 1e3 * g.feed_open);
         if (app.dryRun()) {
-            std::printf("Dry run: nothing written.\n");
+            std::printf("%s\nDry run: nothing written.\n", estimate.c_str());
             return 0;
         }
         writeStl(app.path("constant/triSurface/mantle.stl"), mantle, "mantle");

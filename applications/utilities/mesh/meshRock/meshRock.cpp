@@ -111,6 +111,34 @@ void makeTetMesh(const Application& app, const Specimen& s, const TetMeshRequest
     std::printf("  written to %s\n", msh.string().c_str());
 }
 
+// The surface (and the scan) are made by now; the tetrahedra's count follows from the
+// specimen's volume and the element size. Measured peaks (docs/reliability.md): a disc of 512
+// triangles 62 MB, of 400 000 triangles 88 MB (the code and libraries: CGAL, VTK); with gmsh,
+// 2 900 tetrahedra 90 MB, 13 305 91 MB, 100 281 119 MB (1.2 kB each beyond the libraries).
+// Returns the -dry-run line (core/memoryLimit.hpp: estimateLine).
+std::string checkMeshRockMemory(const Specimen& specimen, const std::optional<TetMeshRequest>& tetRequest)
+{
+    const double triangles = static_cast<double>(specimen.surface.triangles.size()) +
+                             (specimen.scan ? static_cast<double>(specimen.scan->triangles.size()) : 0.0);
+    double bytes = 80e6 + 150.0 * triangles;
+    std::string counts = std::to_string(static_cast<std::uint64_t>(triangles)) + " surface triangles";
+    if (tetRequest) {
+        // A regular tetrahedron of edge a has volume a^3 / (6 sqrt 2).
+        const double tets = tetRequest->elementCount > 0 ? tetRequest->elementCount
+                                                         : specimen.properties.volume * 6.0 * std::sqrt(2.0) /
+                                                               std::pow(tetRequest->elementSize, 3);
+        bytes += 25e6 + std::min(tets, 1e15) * 1500.0;  // gmsh loaded, and each tetrahedron
+        counts += ", about " + formatNumber(std::round(tets)) + " tetrahedra";
+        checkMemoryFits(static_cast<std::uint64_t>(bytes),
+                        "system/feMeshDict: about " + formatNumber(std::round(tets)) + " tetrahedra",
+                        "raise elementSize (or lower elementCount) in system/feMeshDict");
+    } else {
+        checkMemoryFits(static_cast<std::uint64_t>(bytes), "system/meshRockDict: " + counts,
+                        "use a coarser surface (fewer facets)");
+    }
+    return estimateLine(static_cast<std::uint64_t>(bytes), counts);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -121,19 +149,10 @@ int main(int argc, char** argv)
         std::optional<TetMeshRequest> tetRequest;
         if (fs::exists(app.path("system/feMeshDict")))
             tetRequest = readTetRequest(Dictionary::readFile(app.path("system/feMeshDict")));
-        if (tetRequest) {
-            // A regular tetrahedron of edge a has volume a^3 / (6 sqrt 2). Measured: 100 281
-            // tetrahedra peak at 119 MB (1.2 kB each, gmsh included).
-            const double tets = tetRequest->elementCount > 0
-                                    ? tetRequest->elementCount
-                                    : specimen.properties.volume * 6.0 * std::sqrt(2.0) /
-                                          std::pow(tetRequest->elementSize, 3);
-            checkMemoryFits(static_cast<std::uint64_t>(std::min(tets, 1e15) * 1500.0),
-                            "system/feMeshDict: about " + formatNumber(std::round(tets)) + " tetrahedra",
-                            "raise elementSize (or lower elementCount) in system/feMeshDict");
-        }
+        const std::string estimate = checkMeshRockMemory(specimen, tetRequest);
         report(specimen);
         if (app.dryRun()) {
+            std::printf("%s\n", estimate.c_str());
             std::printf("Dry run: inputs are valid, nothing written.\n");
             return 0;
         }

@@ -73,10 +73,28 @@ MeshRequest readRequest(const Dictionary& d, double domainVolume)
     return r;
 }
 
-Domain domainOf(const Specimen& s)
+Domain domainOf(const Specimen& s, const fs::path& caseDir)
 {
     if (s.kind == Specimen::Kind::disc) return Domain::disc(s.centre, {0, 1, 0}, s.diameter, s.thickness);
-    return Domain::fromPlanes(s.planes);
+    try {
+        return Domain::fromPlanes(s.planes);
+    } catch (const UserError& e) {  // the planes are those of geometryProperties
+        throw UserError((caseDir / "constant/geometryProperties").string() +
+                        ": convexHull/planes: " + e.what() + "; run meshRock again to remake the specimen");
+    }
+}
+
+// The hull planes must enclose the volume meshRock recorded beside them: a plane changed by
+// hand (moved, or its normal negated without its offset) would mesh another rock, silently.
+void checkHullVolume(const Specimen& s, const Domain& domain, const fs::path& caseDir)
+{
+    if (s.kind != Specimen::Kind::convexHull) return;
+    const double recorded = s.properties.volume;
+    if (std::abs(domain.volume() - recorded) <= 1e-6 * recorded) return;
+    throw UserError(
+        (caseDir / "constant/geometryProperties").string() + ": the convexHull planes enclose " +
+        formatNumber(domain.volume()) + " m^3, but its 'volume' is " + formatNumber(recorded) +
+        " m^3: the planes (or the volume) were changed after meshRock wrote them; run meshRock again");
 }
 
 void writeVtk(const Application& app, const VoronoiMesh& mesh)
@@ -123,12 +141,16 @@ int main(int argc, char** argv)
     return runApplication(info, argc, argv, [](Application& app) {
         const Specimen specimen = readSpecimen(app.casePath());
         const Dictionary dict = Dictionary::readFile(app.path("system/voronoiMeshDict"));
-        const Domain domain = domainOf(specimen);
+        const Domain domain = domainOf(specimen, app.casePath());
+        checkHullVolume(specimen, domain, app.casePath());
         const MeshRequest request = readRequest(dict, domain.volume());
-        // Measured: 119 600 cells peak at 1.88 GB with the VTK output (15.7 kB per cell).
-        checkMemoryFits(static_cast<std::uint64_t>(request.nCells) * 16000u,
-                        "system/voronoiMeshDict: " + std::to_string(request.nCells) + " cells",
+        // Measured: 119 600 cells peak at 1.88 GB with the VTK output (15.7 kB per cell);
+        // 300 cells at 23 MB (the code and libraries).
+        const std::uint64_t estimate = 30000000u + static_cast<std::uint64_t>(request.nCells) * 16000u;
+        const std::string cells = std::to_string(request.nCells) + " cells";
+        checkMemoryFits(estimate, "system/voronoiMeshDict: " + cells,
                         "request fewer cells (nCells or a larger mesoConstant in system/voronoiMeshDict)");
+        if (app.dryRun()) std::printf("%s\n", estimateLine(estimate, cells).c_str());
         std::printf("Seeding %d cells, pruning distance %.4g mm, seed %llu, domain volume %.6g m^3\n",
                     request.nCells, 1e3 * request.pruningDistance,
                     static_cast<unsigned long long>(request.seed), domain.volume());

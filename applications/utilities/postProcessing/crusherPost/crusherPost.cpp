@@ -121,7 +121,6 @@ int main(int argc, char** argv)
             }
         }
         const fs::path dir = app.path("postProcessing/crusherPost");
-        fs::create_directories(dir);
         char text[2000];
         std::snprintf(
             text, sizeof(text),
@@ -133,7 +132,10 @@ int main(int argc, char** argv)
             "fragmentsDischarged\t%d\nP50_m\t%.6g\nP80_m\t%.6g\nCSS_m\t%.6g\n",
             steadyStart, P.n, P.mean, P.spread, p.mean, p.spread, Q.mean, Q.spread, 3.6 * Q.mean, fed.back(),
             inside.back(), out.back(), imbalance, nFragments, psd.p50, psd.p80, css);
-        writeFileAtomically(dir / "summary.dat", [&](std::ostream& o) { o << text; });
+        if (!app.dryRun()) {  // a dry run writes nothing
+            fs::create_directories(dir);
+            writeFileAtomically(dir / "summary.dat", [&](std::ostream& o) { o << text; });
+        }
         std::printf("Steady window t >= %g s (%d rows of %zu)\n", steadyStart, P.n, t.size());
         std::printf("Power draw        %10.4g kW   (spread %.3g kW)\n", 1e-3 * P.mean, 1e-3 * P.spread);
         std::printf("Hydraulic press.  %10.4g MPa  (spread %.3g MPa; piston area %g m^2)\n", 1e-6 * p.mean,
@@ -169,6 +171,8 @@ int main(int argc, char** argv)
             } catch (const UserError& e) {
                 std::printf("Plots skipped: %s\n", e.what());
             }
+        } else {
+            std::printf("Dry run: nothing written.\n");
         }
         return 0;
     });

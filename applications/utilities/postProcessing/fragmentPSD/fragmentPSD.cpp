@@ -15,6 +15,7 @@
 #include <cstdio>
 
 #include "core/application.hpp"
+#include "core/memoryLimit.hpp"
 #include "fragments/fragmentCase.hpp"
 #include "voronoi/voronoiMeshIO.hpp"
 
@@ -54,6 +55,24 @@ void printSummary(const FragmentAnalysis& a, const FragmentSizeReport& r)
         std::printf("%-28s %10.4g %10.4g %10.4g\n", name, 1e3 * s.p50, 1e3 * s.p80, 100 * s.t10);
 }
 
+// Refuse a mesh whose analysis cannot fit, before reading it (core/memoryLimit.hpp): the
+// VoronoiMesh as read, the state's poses and bond stages, the fragments' labels and
+// per-cell geometry; plus the code and libraries. An upper estimate, compared with the
+// measured peak in docs/reliability.md. Returns the -dry-run line.
+std::string checkFragmentMemory(const fs::path& caseDir)
+{
+    const VoronoiMeshSizes s = readVoronoiMeshSizes(caseDir);
+    constexpr std::uint64_t perCell = 1500, perVertex = 100, perFace = 80, perFaceVertex = 8,
+                            perBond = sizeof(VoronoiBond) + 100, libraries = 30000000;
+    const std::uint64_t bytes = libraries + perCell * s.nCells + perVertex * s.nVertices +
+                                perFace * s.nFaces + perFaceVertex * s.nFaceVertices + perBond * s.nBonds;
+    const std::string counts = std::to_string(s.nCells) + " cells, " + std::to_string(s.nBonds) + " bonds";
+    checkMemoryFits(bytes,
+                    (caseDir / voronoiMeshDirectory / "meshInfo").lexically_normal().string() + ": " + counts,
+                    "analyse a smaller mesh or use a machine with more memory");
+    return estimateLine(bytes, counts);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -62,6 +81,7 @@ int main(int argc, char** argv)
         const auto start = std::chrono::steady_clock::now();
         const TimeDirectory time = selectTime(app.casePath(), app.optionIf("-time"));
         const double density = readRockDensity(app.casePath());
+        const std::string estimate = checkFragmentMemory(app.casePath());
         const VoronoiMesh mesh = readVoronoiMesh(app.casePath());
         const DemSnapshot state =
             readDemSnapshot(app.path(time.name) / "demState", mesh.nCells(), mesh.nBonds());
@@ -77,7 +97,7 @@ int main(int argc, char** argv)
         printSummary(analysis, report);
         std::printf("Analysis: %.3g s\n", analysis_time);
         if (app.dryRun()) {
-            std::printf("Dry run: nothing written.\n");
+            std::printf("%s\nDry run: nothing written.\n", estimate.c_str());
             return 0;
         }
 
