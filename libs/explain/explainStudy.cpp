@@ -227,6 +227,10 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     }
     if (dict.isDict("tied"))
         for (const Entry& e : dict.subDict("tied").entries()) {
+            if (!e.dict)
+                throw UserError(
+                    dict.subDict("tied").location(e.keyword).str() + ": tied entry '" + e.keyword +
+                    "' must be a sub-dictionary { entry <file/entry>; factor <f>; of <baseline>; }");
             const Dictionary& d = *e.dict;
             checkKnownEntries(d, {"entry", "factor", "of"});
             calibration::TiedEntry t;

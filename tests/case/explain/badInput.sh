@@ -47,6 +47,11 @@ sed -i 's/tensileStrength \[1 -1 -2 0 0 0 0\] 31.8e6;/tensileStrength [1 -1 -2 0
 expectUserError "the conditions model the same rock" explainGap -case study
 cp keep study/system/explainGapDict
 
+# A tied entry that is not a sub-dictionary (it crashed on a null pointer).
+sed -i 's/^    cohesion { entry bond/    bad 1;\n    cohesion { entry bond/' study/system/explainGapDict
+expectUserError "tied entry 'bad' must be a sub-dictionary" explainGap -case study
+cp keep study/system/explainGapDict
+
 printf 'FoamFile { format ascii; class dictionary; object modelEffects; }\nseatingGap { depth 1e-5; }\n' \
     > bdt/constant/modelEffects
 (cd bdt && meshRock > /dev/null 2>&1 && voronoiMesh > /dev/null 2>&1) || fail "meshing failed"
