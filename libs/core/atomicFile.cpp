@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -106,6 +107,20 @@ void writeViaTemporary(const fs::path& path, const std::function<bool(const fs::
                         "' (disk full, permissions or I/O error); the previous version of the file is kept");
     }
     renameOver(tmp, path);
+}
+
+bool fileTailContains(const fs::path& path, const std::string& marker, std::size_t window)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size <= 0) return false;
+    const std::streamoff n = std::min<std::streamoff>(size, static_cast<std::streamoff>(window));
+    in.seekg(size - n);
+    std::string tail(static_cast<std::size_t>(n), '\0');
+    in.read(tail.data(), n);
+    return in && tail.find(marker) != std::string::npos;
 }
 
 }  // namespace rockfrac

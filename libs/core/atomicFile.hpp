@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <ostream>
+#include <string>
 
 namespace rockfrac {
 
@@ -16,6 +17,12 @@ void writeFileAtomically(const std::filesystem::path& path, const std::function<
 // rename tmpName over `path`. If writer throws or returns false, tmp is removed.
 void writeViaTemporary(const std::filesystem::path& path,
                        const std::function<bool(const std::filesystem::path&)>& writer);
+
+// For files a third-party program writes itself (gmsh's .msh, gnuplot's PNG), whose write
+// errors it may not report: does the file end in its format's closing marker ("$End..." of
+// a .msh section, a PNG's "IEND" chunk) within its last `window` bytes? A file cut short by
+// a full disk does not.
+bool fileTailContains(const std::filesystem::path& path, const std::string& marker, std::size_t window);
 
 // Temporary name used for `path` (same directory, so rename is atomic).
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);

@@ -164,7 +164,12 @@ TetMeshingResult meshWithGmsh(double solidVolume, const TetMeshRequest& request,
             const fs::path named = tmp.parent_path() / (tmp.filename().string() + ".msh");
             gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
             gmsh::write(named.string());
+            // gmsh does not report a short write: a complete .msh ends with a section's $End tag.
             std::error_code ec;
+            if (!fileTailContains(named, "$End", 64)) {
+                fs::remove(named, ec);
+                return false;
+            }
             fs::rename(named, tmp, ec);
             return !ec;
         });

@@ -141,6 +141,12 @@ void renderPng(const std::string& commands, const fs::path& png, int width, int 
                                    script.filename().string()},
                                   absolutePng.parent_path(), log);
     std::error_code ignored;
+    if (status == 0 && fs::exists(temporary) && fs::file_size(temporary) > 0 &&
+        !fileTailContains(temporary, "IEND", 16)) {
+        fs::remove(temporary, ignored);
+        throw UserError("cannot write '" + absolutePng.string() +
+                        "': gnuplot's PNG was cut short (disk full or I/O error)");
+    }
     if (status != 0 || !fs::exists(temporary) || fs::file_size(temporary) == 0) {
         const std::string message = lastLines(log, 2);
         fs::remove(temporary, ignored);

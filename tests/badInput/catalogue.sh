@@ -435,6 +435,7 @@ sed -i 's/^writeInterval /writeIntervall /' system/controlDict
 SETUP
 badCase caseDictCheckLoading dem "loading" "did you mean 'settling'?" caseDict -case . -check <<'SETUP'
 echo 'setling { duration 1e-4; }' >> constant/loading
+SETUP
 # ---- estimates and messages (issue 41 items 3 and 7) ----------------------------------------
 # A generated rock (a convex hull) after meshRock, and awk editing plane 0 of its
 # geometryProperties: $1 the awk expression printing the new plane from $1..$4.
