@@ -63,24 +63,18 @@ void scatterEntities(const Group& all, const std::vector<int>& part_of, Group& m
 {
     const int n_ranks = size(comm), me = rank(comm);
     std::vector<std::vector<unsigned char>> to_rank(n_ranks);
-    if (me == root) {
+    if (me == root)
         for (int i = 0; i < static_cast<int>(part_of.size()); ++i) {
-            auto& out = to_rank[part_of[i]];
-            const std::int64_t id = i;
-            const auto* bytes = reinterpret_cast<const unsigned char*>(&id);
-            out.insert(out.end(), bytes, bytes + sizeof(id));
-            packEntity(all, i, out);
+            fieldDetail::put(to_rank[part_of[i]], static_cast<std::int64_t>(i));
+            packEntity(all, i, to_rank[part_of[i]]);
         }
-    }
     const auto received = exchangeBytes(to_rank, comm);
     mine = Group{};
     ids.clear();
     const auto& in = received[root];
     for (std::size_t at = 0; at < in.size();) {
-        std::int64_t id;
-        std::memcpy(&id, in.data() + at, sizeof(id));
-        ids.push_back(id);
-        at = unpackEntity(mine, in, at + sizeof(id));
+        ids.push_back(fieldDetail::take<std::int64_t>(in, at));
+        at = unpackEntity(mine, in, at);
     }
 }
 
@@ -100,51 +94,47 @@ GhostLayer exchangeGhosts(const Group& mine, const std::vector<std::int64_t>& id
     const int n_ranks = size(comm), me = rank(comm);
     const auto extents = gatherExtents(extentOf(centroids, reach), comm);
     const auto candidates = ghostCandidates(centroids, reach, extents, me, margin);
+    // Per candidate: id, centroid, reach, the entity's byte count, its bytes (the count lets
+    // the receiver skip a candidate it does not keep without unpacking it).
     std::vector<std::vector<unsigned char>> to_rank(n_ranks);
     for (int q = 0; q < n_ranks; ++q)
         for (int i : candidates[q]) {
             auto& out = to_rank[q];
-            auto put = [&out](const auto& value) {
-                const auto* b = reinterpret_cast<const unsigned char*>(&value);
-                out.insert(out.end(), b, b + sizeof(value));
-            };
-            put(ids[i]);
-            put(centroids[i]);
-            put(reach[i]);
+            fieldDetail::put(out, ids[i]);
+            fieldDetail::put(out, centroids[i]);
+            fieldDetail::put(out, reach[i]);
+            const std::size_t count_at = out.size();
+            fieldDetail::put(out, std::uint64_t{0});
             packEntity(mine, i, out);
+            const std::uint64_t count = out.size() - count_at - sizeof(std::uint64_t);
+            std::memcpy(out.data() + count_at, &count, sizeof(count));
         }
     const auto received = exchangeBytes(to_rank, comm);
 
-    // Unpack every candidate, keep those within reach, in global id order.
+    // Read every candidate's header, keep those within reach, unpack them in global id order.
     struct Candidate {
         std::int64_t id;
         int owner;
-        Vec3 centroid;
-        double reach;
         std::size_t at;  // its entity's bytes in received[owner]
     };
     std::vector<Candidate> all;
+    std::vector<Vec3> cc;
+    std::vector<double> cr;
     GhostLayer layer;
     for (int q = 0; q < n_ranks; ++q) {
         const auto& in = received[q];
         layer.bytes_received += in.size();
-        Group scratch;
         for (std::size_t at = 0; at < in.size();) {
             Candidate c{};
             c.owner = q;
-            std::memcpy(&c.id, in.data() + at, sizeof(c.id));
-            std::memcpy(&c.centroid, in.data() + at + sizeof(c.id), sizeof(c.centroid));
-            std::memcpy(&c.reach, in.data() + at + sizeof(c.id) + sizeof(c.centroid), sizeof(c.reach));
-            c.at = at + sizeof(c.id) + sizeof(c.centroid) + sizeof(c.reach);
-            at = unpackEntity(scratch, in, c.at);  // to find the next candidate
+            c.id = fieldDetail::take<std::int64_t>(in, at);
+            cc.push_back(fieldDetail::take<Vec3>(in, at));
+            cr.push_back(fieldDetail::take<double>(in, at));
+            const auto count = fieldDetail::take<std::uint64_t>(in, at);
+            c.at = at;
+            at += count;
             all.push_back(c);
         }
-    }
-    std::vector<Vec3> cc(all.size());
-    std::vector<double> cr(all.size());
-    for (std::size_t k = 0; k < all.size(); ++k) {
-        cc[k] = all[k].centroid;
-        cr[k] = all[k].reach;
     }
     const std::vector<bool> keep = withinReach(centroids, reach, cc, cr, margin);
     std::vector<std::size_t> order;

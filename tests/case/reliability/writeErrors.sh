@@ -64,14 +64,6 @@ latest=$(cd "$full" && ls -d [0-9]* | sort -g | tail -1)
 for t in $(cd "$full" && ls -d [0-9]*); do [ -s "$full/$t/demState" ] || fail "partial time directory $t"; done
 # Every VTK file is whole (VTK's writer reported success on a cut-short file, which was then
 # renamed into place: a torn 16 kB frame).
-wholeFrames()
-{
-    local f
-    for f in "$1"/VTK/*.vtu "$1"/VTK/*.vtp; do
-        [ -e "$f" ] || continue
-        tail -c 16 "$f" | grep -q '</VTKFile>' || fail "torn VTK file $f"
-    done
-}
 wholeFrames "$full"
 # The kept state is good: with room again, the run continues from it.
 mkdir -p "$work/roomy" && cp -r "$full/." "$work/roomy"
