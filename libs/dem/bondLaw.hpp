@@ -147,6 +147,9 @@ struct BondKernelArgs {
     // (the second pass for interfaces whose first onset was pending).
     const int* only_interfaces = nullptr;
     int n_only = 0;
+    // A decomposed model (dem/demExchange.hpp): only interfaces with counted[k] add to the
+    // sums; null: every interface.
+    const unsigned char* counted = nullptr;
 };
 
 RF_HD inline BondHistory loadBondHistory(unsigned char stage, const BondSoftening& s)
@@ -248,7 +251,7 @@ RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename La
         torque_i += cross(arm_i, out.force_on_i);
         torque_j -= cross(arm_j, out.force_on_i);
     }
-    block.add(sums);
+    if (!a.counted || a.counted[k]) block.add(sums);
     a.intact_bonds[k] = intact;
     a.force_on_i[k] = force;
     a.torque_on_i[k] = torque_i;

@@ -106,6 +106,7 @@ struct WallMotion {
 };
 
 class CudaDemModel;  // libs/demCuda: steps this model's state on a GPU
+class DemExchange;   // dem/demExchange.hpp: the other ranks of a decomposed run
 
 class DemModel {
 public:
@@ -202,8 +203,9 @@ public:
     const InterfaceArrays& interfaces() const { return interfaces_; }
     const ContactPairArrays& contactPairs() const { return pairs_; }
     const WallContactArrays& wallContacts() const { return wall_items_; }
-    const DemEnergies& energies() const { return energies_; }
-    const DemCounters& counters() const { return counters_; }
+    // Of the whole model: in a decomposed run, the sums over every rank.
+    const DemEnergies& energies() const { return exchange_ ? global_energies_ : energies_; }
+    const DemCounters& counters() const { return exchange_ ? global_counters_ : counters_; }
     const DemParameters& parameters() const { return parameters_; }
     const std::vector<Vec3>& triangleVertices() const { return triangle_vertices_; }
     const std::vector<std::uint16_t>& triangleFeatures() const { return triangle_features_; }
@@ -235,6 +237,18 @@ public:
     // (a state set from outside is an energy input the balance cannot see).
     void setCellPose(int cell, const Vec3& position, const Quat& orientation);
     void setCellVelocity(int cell, const Vec3& velocity, const Vec3& angular_velocity_body);
+
+    // ---- Decomposed runs (dem/demExchange.hpp) ---------------------------------
+    // This model now holds one rank's cells (owned[c] != 0) and their ghosts, and takes every
+    // decision with the other ranks through `exchange` (kept, not owned). Items are counted
+    // where their first cell is owned; energies() and counters() become the sums over the
+    // ranks, with `whole` the whole model's energies at this moment (their cumulative parts
+    // stay with rank 0). Call after removeCells has cut the model down to these cells.
+    void decompose(DemExchange* exchange, const std::vector<char>& owned, const DemEnergies& whole);
+    bool decomposed() const { return exchange_ != nullptr; }
+    bool ownsCell(int c) const { return !exchange_ || owned_cell_[c]; }
+    // The neighbour lists' skin: pairs within the two bounding radii plus this are listed [m].
+    double skin() const { return skin_; }
 
     // ---- Derived outputs ---------------------------------------------------
     // Fraction of the cell's initial bonds that are broken (0 for a cell without bonds).
@@ -294,6 +308,12 @@ private:
     void measureCells(double sync_dt);
     void finishMeasurement(double kinetic_translation, double kinetic_rotation, int non_finite_cell);
     void updateStatus(int non_finite_cell);
+    // Decomposed: the energies and counters summed over the ranks; the first non-finite cell.
+    int reduceOverRanks(int non_finite_cell);
+    void countPairs();
+    void countInterfaces();
+    void sumWallReactionsOverRanks();
+    bool counted(const std::vector<unsigned char>& mask, int i) const { return mask.empty() || mask[i]; }
     void runBondKernel(double dt);
     void runContactKernels(double dt);
     void gatherForces();
@@ -395,6 +415,13 @@ private:
     double energy_floor_ = 0.0;  // fracture energy of one average bond: the check's noise floor
     DemCounters counters_;
     DemStatus status_;
+
+    // Decomposed runs: the exchange, which cells are this rank's, which interfaces and pairs
+    // it counts (empty when not decomposed), and the sums over the ranks.
+    DemExchange* exchange_ = nullptr;
+    std::vector<unsigned char> owned_cell_, counted_interface_, counted_pair_;
+    DemEnergies global_energies_;
+    DemCounters global_counters_;
 };
 
 // What a device backend may do to a DemModel besides its public interface: mirror the

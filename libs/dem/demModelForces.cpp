@@ -4,6 +4,7 @@
 
 #include "core/parallel.hpp"
 #include "dem/cellKernels.hpp"
+#include "dem/demExchange.hpp"
 #include "dem/demModel.hpp"
 #include "dem/kernelViews.hpp"
 
@@ -31,6 +32,7 @@ BondKernelArgs DemModel::bondArgs()
     viewBondArrays(a, cells_, interfaces_, bonds_, rotation_, angular_velocity_world_);
     bond_block_sums_.resize((a.n_interfaces + a.block_size - 1) / a.block_size);
     a.block_sums = bond_block_sums_.data();
+    a.counted = counted_interface_.empty() ? nullptr : counted_interface_.data();
     return a;
 }
 
@@ -71,6 +73,7 @@ void DemModel::runBondKernel(double dt)
     energies_.bond_strain = strain;
     int broken = 0, open = 0, cracked = 0;
     for (int k = 0; k < interfaces_.size(); ++k) {
+        if (!counted(counted_interface_, k)) continue;
         const int broken_here =
             interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k] - interfaces_.intact_bonds[k];
         broken += broken_here;
@@ -85,12 +88,15 @@ void DemModel::runBondKernel(double dt)
 namespace {
 
 // Sums over contact items in item order (deterministic); returns the active count.
+// A decomposed model counts the items of its own cells only (owned_cell empty: every item).
 template <class Arrays>
-int sumContactEnergies(const Arrays& items, DemEnergies& energies, double& damping_power, int& intersections)
+int sumContactEnergies(const Arrays& items, const std::vector<unsigned char>& owned_cell,
+                       DemEnergies& energies, double& damping_power, int& intersections)
 {
     int active = 0;
     for (int i = 0; i < items.size(); ++i) {
         if (items.status[i] == contactNone) continue;
+        if (!owned_cell.empty() && !owned_cell[items.cell[i]]) continue;
         ++active;
         intersections += items.status[i] == contactCoresIntersect;
         energies.contact_elastic += items.elastic_energy[i];
@@ -112,6 +118,7 @@ void DemModel::runContactKernels(double dt)
     pa.patch = parameters_.cell_contact_patch;
     pair_block_sums_.assign((pa.n_pairs + pa.block_size - 1) / pa.block_size, ContactBlockSums{});
     pa.block_sums = pair_block_sums_.data();
+    pa.counted = counted_pair_.empty() ? nullptr : counted_pair_.data();
     parameters_.contact_law->runPairs(pa);
 
     WallKernelArgs wa;
@@ -136,22 +143,25 @@ void DemModel::runContactKernels(double dt)
         counters_.core_intersections += s.cores_intersect;
     }
     counters_.pair_core_intersections = counters_.core_intersections;
-    counters_.wall_contacts_active = sumContactEnergies(wall_items_, energies_, force_rates_.contact_damping,
-                                                        counters_.core_intersections);
+    counters_.wall_contacts_active = sumContactEnergies(
+        wall_items_, owned_cell_, energies_, force_rates_.contact_damping, counters_.core_intersections);
     energies_.contact_damping += force_rates_.contact_damping * 0.5 * dt;  // second half kick
     for (WallState& w : walls_) {
         w.reaction = w.reaction_torque = Vec3{};
         w.power = 0.0;
     }
-    for (int i = 0; i < wall_items_.size(); ++i) {
-        WallState& w = walls_[wall_items_.wall[i]];
-        const Vec3 force = wall_items_.force_on_cell[i];
-        w.reaction -= force;
-        // Torque on the wall about its origin: minus the cell's force system moved there.
-        w.reaction_torque -=
-            cross(cells_.position[wall_items_.cell[i]] - w.origin, force) + wall_items_.torque_on_cell[i];
-        w.power += wall_items_.wall_power[i];
-    }
+    if (exchange_)
+        sumWallReactionsOverRanks();
+    else
+        for (int i = 0; i < wall_items_.size(); ++i) {
+            WallState& w = walls_[wall_items_.wall[i]];
+            const Vec3 force = wall_items_.force_on_cell[i];
+            w.reaction -= force;
+            // Torque on the wall about its origin: minus the cell's force system moved there.
+            w.reaction_torque -=
+                cross(cells_.position[wall_items_.cell[i]] - w.origin, force) + wall_items_.torque_on_cell[i];
+            w.power += wall_items_.wall_power[i];
+        }
     for (WallState& w : walls_) {  // second half kick
         w.work += w.power * 0.5 * dt;
         energies_.wall_work += w.power * 0.5 * dt;
@@ -178,8 +188,9 @@ void DemModel::gatherForces()
     for (int c = 0; c < n; ++c) gatherCellForces(a, c);
     float largest = 0.0f;  // a maximum: the same whatever the thread count
 #pragma omp parallel for schedule(static) reduction(max : largest) if (n >= parallelMinimumItems())
-    for (int c = 0; c < n; ++c) largest = std::max(largest, contact_frequency2_[c]);
-    max_contact_frequency2_ = largest;
+    for (int c = 0; c < n; ++c)
+        if (counted(owned_cell_, c)) largest = std::max(largest, contact_frequency2_[c]);
+    max_contact_frequency2_ = exchange_ ? exchange_->maxOverRanks(largest) : largest;
 }
 
 void DemModel::computeForces(double dt)
@@ -187,8 +198,9 @@ void DemModel::computeForces(double dt)
     refreshKinematicCaches();
     runBondKernel(dt);
     // Moved too far, or an interface lost its first bond (its pair must enter the list).
-    if (neighbourListsStale() || counters_.interfaces_cracked != interfaces_cracked_at_build_)
-        rebuildNeighbourLists();
+    bool rebuild = neighbourListsStale() || counters_.interfaces_cracked != interfaces_cracked_at_build_;
+    if (exchange_) rebuild = exchange_->anyRank(rebuild);  // every rank when one must: the serial moments
+    if (rebuild) rebuildNeighbourLists();
     runContactKernels(dt);
     gatherForces();
     forces_valid_ = true;

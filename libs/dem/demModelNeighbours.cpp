@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "dem/demExchange.hpp"
 #include "dem/demModel.hpp"
 #include "dem/demModelDetail.hpp"
 
@@ -89,6 +90,10 @@ void DemModel::rebuildNeighbourLists()
     pairs_ = std::move(next);
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
     counters_.contact_pairs_listed = pairs_.size();
+    if (exchange_) {
+        exchange_->checkGhostReach(cells_);
+        countPairs();
+    }
     buildWallItems();
     position_at_build_ = cells_.position;
     wall_origin_at_build_.clear();

@@ -4,6 +4,7 @@
 
 #include "core/parallel.hpp"
 #include "dem/cellKernels.hpp"
+#include "dem/demExchange.hpp"
 #include "dem/demModel.hpp"
 #include "dem/demModelDetail.hpp"
 #include "dem/kernelViews.hpp"
@@ -27,8 +28,10 @@ void DemModel::kickDrift(double dt)
 #pragma omp parallel for schedule(static) if (n_blocks > 1)
     for (int block = 0; block < n_blocks; ++block) {
         double gravity_work = 0.0;
-        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c)
-            gravity_work += kickDriftCell(a, c, dt);
+        for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
+            const double work = kickDriftCell(a, c, dt);
+            if (counted(owned_cell_, c)) gravity_work += work;
+        }
         cell_block_sums_[block].gravity_work = gravity_work;
     }
     for (const CellBlockSums& s : cell_block_sums_) energies_.gravity_work += s.gravity_work;
@@ -55,6 +58,7 @@ void DemModel::measureCells(double sync_dt)
         CellBlockSums s;
         for (int c = block * cell_block_size; c < std::min(n, (block + 1) * cell_block_size); ++c) {
             const CellEnergyTerms t = measureCell(a, c, sync_dt);
+            if (!counted(owned_cell_, c)) continue;  // a ghost: its owner counts it
             s.kinetic_translation += t.kinetic_translation;
             s.kinetic_rotation += t.kinetic_rotation;
             if (!t.finite && s.non_finite_cell < 0) s.non_finite_cell = c;
@@ -76,9 +80,10 @@ void DemModel::finishMeasurement(double kinetic_translation, double kinetic_rota
 {
     energies_.kinetic_translation = kinetic_translation;
     energies_.kinetic_rotation = kinetic_rotation;
+    if (exchange_) non_finite_cell = reduceOverRanks(non_finite_cell);
     // A state set by the caller is an energy input: the balance is measured from here.
     if (rebase_energy_) {
-        initial_balance_ = energies_.balance();
+        initial_balance_ = energies().balance();
         energy_scale_ = 0.0;
         rebase_energy_ = false;
     }
@@ -91,7 +96,7 @@ void DemModel::updateStatus(int non_finite_cell)
     status_.step = counters_.steps;
     status_.time = time_;
     status_.cell = non_finite_cell;
-    const DemEnergies& e = energies_;
+    const DemEnergies& e = energies();
     energy_scale_ = std::max(energy_scale_, e.kinetic() + e.stored() + e.dissipated() +
                                                 std::fabs(e.wall_work) + std::fabs(e.gravity_work));
     status_.energy_scale = energy_scale_;
@@ -101,11 +106,19 @@ void DemModel::updateStatus(int non_finite_cell)
     if (energy_floor_ == 0.0) {
         double area = 0.0, length = 0.0;
         for (int k = 0; k < interfaces_.size(); ++k) {
+            if (!counted(counted_interface_, k)) continue;
             const int n = interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k];
             area += interfaces_.bond_area[k] * n;
             length += (interfaces_.length_i[k] + interfaces_.length_j[k]) * n;
         }
-        const int n_bonds = std::max(1, bonds_.size());
+        int n_bonds = std::max(1, bonds_.size());
+        if (exchange_) {  // of the whole model
+            std::vector<double> sums = {area, length};
+            exchange_->sumOverRanks(sums);
+            area = sums[0];
+            length = sums[1];
+            n_bonds = std::max(1, global_counters_.bonds);
+        }
         energy_floor_ = std::max(1e-300, parameters_.bond_law->energyFloor(area, n_bonds, length / n_bonds));
     }
     if (non_finite_cell >= 0 || !std::isfinite(status_.energy_error))
@@ -146,6 +159,7 @@ void DemModel::singleStep(double dt)
     bookFirstHalfKick(dt);
     kickDrift(dt);
     moveWalls(dt);
+    if (exchange_) exchange_->refreshGhosts(cells_);  // the owners' drift, bitwise
     computeForces(dt);
     kick(dt);
     time_ += dt;

@@ -33,6 +33,9 @@ struct PairKernelArgs {
     Vec3* point_or_torque = nullptr;
     int block_size = 512;
     ContactBlockSums* block_sums = nullptr;  // one per block of block_size pairs (CPU runner)
+    // A decomposed model (dem/demExchange.hpp): only pairs with counted[p] add to the sums;
+    // null: every pair.
+    const unsigned char* counted = nullptr;
 };
 
 // Most points of one cell–cell patch; the deepest are kept beyond that.
@@ -257,7 +260,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         out.friction_dissipation = patch.friction_dissipation;
         out.stiffness = patch.stiffness;
         storeItem(a.items, p, out, status);
-        sums.add(out, status);
+        if (!a.counted || a.counted[p]) sums.add(out, status);
         a.force_on_b[p] = patch.force;
         a.point_or_torque[p] = patch.torque;
         return;
@@ -275,7 +278,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     in.dt = a.dt;
     const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[p]);
     storeItem(a.items, p, out, status);
-    sums.add(out, status);
+    if (!a.counted || a.counted[p]) sums.add(out, status);
     a.force_on_b[p] = out.force_on_b;
     a.point_or_torque[p] = a.patch ? cross(g.point - cells.position[cb], out.force_on_b) : g.point;
 }

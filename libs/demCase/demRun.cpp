@@ -75,22 +75,30 @@ namespace {
 // step); TimeLoop drives it through the hooks below.
 class BondedDemRun final : public TimedRun {
 public:
-    BondedDemRun(const Application& a, TimeLoop& loop);
+    BondedDemRun(const Application& a, TimeLoop& loop, DemDecomposer* decomposer);
     // The log's set-up and summary.
     void printSetup() const override;
     void report(bool interrupted) override;
 
     // ---- the loop's hooks (core/timeLoop.hpp), in the loop's order
 
+    // A decomposed run writes no time directories yet: it cannot restart.
+    bool canRestart() const override { return decomposer == nullptr; }
+
     long start(bool) override
     {
+        if (decomposer) {
+            decomposer->decompose(*model);
+            std::printf("%s\n", decomposer->describe().c_str());
+        }
         backend = std::make_unique<DemBackend>(*model, useCuda);
         if (const CudaDemModel* device = backend->device())
             std::printf("CUDA backend: %.3g MB of device memory (%.0f bytes per cell)\n",
                         1e-6 * static_cast<double>(device->deviceBytes()),
                         static_cast<double>(device->deviceBytes()) / model->cells().size());
-        plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce", columns(),
-                                                              restarted ? model->time() : -1.0);
+        if (writes())
+            plateForceSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "plateForce", columns(),
+                                                                  restarted ? model->time() : -1.0);
         return restarted ? restartStep : 0;
     }
 
@@ -119,7 +127,10 @@ public:
         if (loadingStarted) peakForce = std::max(peakForce, plateForce());
     }
 
-    void sample() override { plateForceSeries->append(sampleRow()); }
+    void sample() override
+    {
+        if (writes()) plateForceSeries->append(sampleRow());
+    }
 
     std::string stopReason() const override
     {
@@ -133,7 +144,8 @@ public:
 
     void writeTime(long step) override
     {
-        backend->download();  // the cell arrays from the device
+        if (decomposer) return;  // not built yet under -parallel (printSetup says so)
+        backend->download();     // the cell arrays from the device
         // State, then frames, then the time directory is published: a run killed before the
         // commit restarts from the previous time, which writes these frames again.
         const fs::path staging = runTime.prepareStagingDir(model->time());
@@ -144,6 +156,7 @@ public:
 
     std::string writeFailure(long step) override
     {
+        if (decomposer) return {};
         backend->download();
         writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, true);
         return "VTK/cells_" + std::to_string(step) + ".vtu";
@@ -163,6 +176,8 @@ public:
     }
 
 private:
+    bool writes() const { return !decomposer || decomposer->writes(); }
+
     void placePlates()
     {
         double zMin = 1e300, zMax = -1e300;
@@ -230,6 +245,7 @@ private:
     }
 
     const Application& app;
+    DemDecomposer* decomposer = nullptr;  // -parallel
     DemParameters parameters;
     Loading loading;
     ModelEffects effects;  // constant/modelEffects (optional): off = the baseline model
@@ -251,9 +267,14 @@ private:
     bool restarted = false;
 };
 
-BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
+BondedDemRun::BondedDemRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
+    : TimedRun(loop), app(a), decomposer(d)
 {
     useCuda = readCudaBackend(controlDict);
+    if (decomposer && useCuda)
+        throw UserError(controlDict.location("backend").str() +
+                        ": backend cuda under -parallel is not built yet; set 'backend cpu;' in " +
+                        controlDict.fileName());
     parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
     loading = readLoading(Dictionary::readFile(a.path("constant/loading")));
     parameters.gravity = loading.gravity;
@@ -345,6 +366,10 @@ void BondedDemRun::printSetup() const
         std::printf("Backend: cpu (OpenMP)\n");
     if (restarted)
         std::printf("Restart from time %s (step %ld)\n", runTime.startTimeName().c_str(), restartStep);
+    if (decomposer)
+        std::printf(
+            "Parallel: writes postProcessing/plateForce only; time directories, VTK frames and "
+            "restarts under -parallel are not built yet\n");
 }
 
 void BondedDemRun::report(bool)
@@ -363,9 +388,9 @@ void BondedDemRun::report(bool)
 
 }  // namespace
 
-std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop)
+std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop, DemDecomposer* decomposer)
 {
-    return std::make_unique<BondedDemRun>(app, loop);
+    return std::make_unique<BondedDemRun>(app, loop, decomposer);
 }
 
 }  // namespace rockfrac

@@ -10,12 +10,28 @@
 //   run->printSetup();
 //   return loop.run(*run);
 #include <memory>
+#include <string>
 
 #include "core/application.hpp"
 #include "core/timeLoop.hpp"
 
 namespace rockfrac {
 
-std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop);
+class DemModel;
+
+// A decomposed run (bondedDemFoam -parallel; the MPI side is parallel/mpi/demExchange.hpp):
+// after the set-up, every rank cuts the whole model down to its own cells and ghosts; the
+// writing rank alone writes postProcessing.
+class DemDecomposer {
+public:
+    virtual ~DemDecomposer() = default;
+    virtual void decompose(DemModel& model) = 0;  // collective
+    virtual bool writes() const = 0;
+    virtual std::string describe() const = 0;  // the log's line, after decompose
+};
+
+// decomposer: null for a serial run.
+std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop,
+                                          DemDecomposer* decomposer = nullptr);
 
 }  // namespace rockfrac

@@ -12,7 +12,12 @@
 // postProcessing/machine/0/machine.dat and postProcessing/discharge/0/discharge.dat.
 // Writes <time>/demState (restart), postProcessing/plateForce/0/plateForce.dat,
 //        VTK/cells_<step>.vtu, VTK/bonds_<step>.vtp and their .series files
+// `mpirun -np N bondedDemFoam -parallel` decomposes a plates case over N ranks
+// (system/decomposeParDict, libs/parallel/mpi): the same plateForce.dat forces.
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "core/application.hpp"
 #include "core/dictionary.hpp"
@@ -22,6 +27,13 @@
 #include "demCase/demCase.hpp"
 #include "demCase/demRun.hpp"
 #include "demCuda/cudaDemModel.hpp"
+#ifdef ROCKFRAC_HAVE_MPI
+#include <mpi.h>
+
+#include "parallel/mpi/demExchange.hpp"
+#include "parallel/mpi/haloExchange.hpp"
+#include "parallel/mpi/parallelSession.hpp"
+#endif
 
 using namespace rockfrac;
 
@@ -37,24 +49,83 @@ const AppInfo info{
         cudaBackendSummary() + ".",
     "[options]",
     {"bondedDemFoam -case tutorials/BDT/granite", "bondedDemFoam -case tutorials/BDT/granite -dry-run",
-     "bondedDemFoam -case tutorials/CH660/tiny"},
-    {},
+     "bondedDemFoam -case tutorials/CH660/tiny",
+     "mpirun -np 2 bondedDemFoam -parallel -case tutorials/BDT/granite"},
+    {{"-parallel", "", "run decomposed over mpirun's ranks (system/decomposeParDict; plates cases)"}},
 };
+
+#ifdef ROCKFRAC_HAVE_MPI
+// The MPI side of -parallel: system/decomposeParDict read by every rank, the model cut by
+// parallel/mpi/demExchange.hpp; rank 0 writes.
+class MpiDecomposer final : public DemDecomposer {
+public:
+    explicit MpiDecomposer(const Application& app) : parameters_(readDecomposeParDict(app.casePath()))
+    {
+        const int ranks = mpi::size(MPI_COMM_WORLD);
+        if (parameters_.n_subdomains != ranks)
+            throw UserError(app.path("system/decomposeParDict").string() + ": numberOfSubdomains is " +
+                            std::to_string(parameters_.n_subdomains) + " but mpirun started " +
+                            std::to_string(ranks) + " ranks; run mpirun -np " +
+                            std::to_string(parameters_.n_subdomains) + " or change numberOfSubdomains");
+    }
+    void decompose(DemModel& model) override
+    {
+        exchange_ = mpi::decomposeDemModel(model, parameters_, MPI_COMM_WORLD);
+    }
+    bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
+    std::string describe() const override
+    {
+        return mpi::describeDecomposition(*exchange_, parameters_, MPI_COMM_WORLD);
+    }
+
+private:
+    DecomposeParameters parameters_;
+    std::unique_ptr<mpi::MpiDemExchange> exchange_;
+};
+
+bool parallelRequested(int argc, char** argv)
+{
+    return std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string(a) == "-parallel"; });
+}
+#endif
 }  // namespace
 
 int main(int argc, char** argv)
 {
-    return runApplication(info, argc, argv, [](Application& app) {
+#ifdef ROCKFRAC_HAVE_MPI
+    // MPI, one log and one error message (parallel/mpi/parallelSession.hpp).
+    std::unique_ptr<mpi::ParallelSession> session;
+    if (parallelRequested(argc, argv)) session = std::make_unique<mpi::ParallelSession>(argc, argv);
+#endif
+    const int code = runApplication(info, argc, argv, [](Application& app) {
         const auto loading = app.path("constant/loading");
         const bool crusher =
             std::filesystem::exists(loading) && isMachineLoading(Dictionary::readFile(loading));
+        std::unique_ptr<DemDecomposer> decomposer;
+        if (app.has("-parallel")) {
+#ifdef ROCKFRAC_HAVE_MPI
+            if (crusher)
+                throw UserError(loading.string() +
+                                ": -parallel runs plates cases only yet (the crusher's feed and discharge "
+                                "across ranks are not built); run the crusher without -parallel");
+            decomposer = std::make_unique<MpiDecomposer>(app);
+#else
+            throw UserError("-parallel: this build has no MPI; install OpenMPI (utilities/installDependencies) "
+                            "and build again");
+#endif
+        }
         // system/controlDict: time and write control, the DEM step, the run's function.
         TimeLoop loop(app, {demControlEntries(), {crusher ? "machine" : "plateForce"}});
         // Reads and checks every input: plates on a specimen, or a cone crusher.
-        const std::unique_ptr<TimedRun> run = crusher ? newCrusherRun(app, loop) : newBondedDemRun(app, loop);
+        const std::unique_ptr<TimedRun> run =
+            crusher ? newCrusherRun(app, loop) : newBondedDemRun(app, loop, decomposer.get());
         run->printSetup();
         // Until endTime or the stop criterion: per step the stage, the step, the rows and
         // the write rules; SIGINT/SIGTERM write the state (libs/core/timeLoop.hpp).
         return loop.run(*run);
     });
+#ifdef ROCKFRAC_HAVE_MPI
+    if (session) return session->finish(code);
+#endif
+    return code;
 }

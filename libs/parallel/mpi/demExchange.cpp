@@ -1,0 +1,166 @@
+#include "parallel/mpi/demExchange.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "parallel/mpi/haloExchange.hpp"
+
+namespace rockfrac::mpi {
+
+namespace {
+
+void check(int status, const char* what)
+{
+    if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI call failed: ") + what);
+}
+
+// What a ghost needs of its owner before a force evaluation: the kinematic state.
+constexpr int doubles_per_cell = 13;
+constexpr int ghost_tag = 3801;
+
+void packCell(const CellArrays& c, int i, double* out)
+{
+    const Vec3 &x = c.position[i], &v = c.velocity[i], &w = c.angular_velocity[i];
+    const Quat& q = c.orientation[i];
+    const double values[doubles_per_cell] = {x.x, x.y, x.z, v.x, v.y, v.z, q.w, q.x, q.y, q.z, w.x, w.y, w.z};
+    std::memcpy(out, values, sizeof(values));
+}
+
+void unpackCell(const double* in, CellArrays& c, int i)
+{
+    c.position[i] = {in[0], in[1], in[2]};
+    c.velocity[i] = {in[3], in[4], in[5]};
+    c.orientation[i].w = in[6];
+    c.orientation[i].x = in[7];
+    c.orientation[i].y = in[8];
+    c.orientation[i].z = in[9];
+    c.angular_velocity[i] = {in[10], in[11], in[12]};
+}
+
+}  // namespace
+
+MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell, std::vector<char> owned,
+                               std::vector<Neighbour> neighbours, std::vector<Vec3> start_position,
+                               double allowance)
+    : comm_(comm),
+      global_cell_(std::move(global_cell)),
+      owned_(std::move(owned)),
+      neighbours_(std::move(neighbours)),
+      start_position_(std::move(start_position)),
+      allowance_(allowance)
+{
+    rank_ = mpi::rank(comm);
+    size_ = mpi::size(comm);
+    send_buffer_.resize(neighbours_.size());
+    recv_buffer_.resize(neighbours_.size());
+}
+
+void MpiDemExchange::refreshGhosts(CellArrays& cells)
+{
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * neighbours_.size());
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        auto& in = recv_buffer_[k];
+        in.resize(neighbours_[k].recv.size() * doubles_per_cell);
+        if (in.empty()) continue;
+        requests.emplace_back();
+        check(MPI_Irecv(in.data(), static_cast<int>(in.size()), MPI_DOUBLE, neighbours_[k].rank, ghost_tag,
+                        comm_, &requests.back()),
+              "MPI_Irecv (ghosts)");
+    }
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        auto& out = send_buffer_[k];
+        const std::vector<int>& send = neighbours_[k].send;
+        out.resize(send.size() * doubles_per_cell);
+        if (out.empty()) continue;
+        for (std::size_t i = 0; i < send.size(); ++i)
+            packCell(cells, send[i], out.data() + i * doubles_per_cell);
+        requests.emplace_back();
+        check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, neighbours_[k].rank, ghost_tag,
+                        comm_, &requests.back()),
+              "MPI_Isend (ghosts)");
+    }
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall (ghosts)");
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        const std::vector<int>& recv = neighbours_[k].recv;
+        for (std::size_t i = 0; i < recv.size(); ++i)
+            unpackCell(recv_buffer_[k].data() + i * doubles_per_cell, cells, recv[i]);
+    }
+}
+
+bool MpiDemExchange::anyRank(bool mine)
+{
+    int value = mine ? 1 : 0;
+    check(MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, MPI_LOR, comm_), "MPI_Allreduce (or)");
+    return value != 0;
+}
+
+double MpiDemExchange::maxOverRanks(double mine)
+{
+    check(MPI_Allreduce(MPI_IN_PLACE, &mine, 1, MPI_DOUBLE, MPI_MAX, comm_), "MPI_Allreduce (max)");
+    return mine;
+}
+
+// Gathered, then added in rank order on every rank: the same bits everywhere, whatever the
+// MPI library's reduction tree.
+void MpiDemExchange::sumOverRanks(std::vector<double>& values)
+{
+    const int n = static_cast<int>(values.size());
+    std::vector<double> all(static_cast<std::size_t>(n) * size_);
+    check(MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, comm_),
+          "MPI_Allgather (sums)");
+    for (int i = 0; i < n; ++i) {
+        double sum = all[i];
+        for (int r = 1; r < size_; ++r) sum += all[static_cast<std::size_t>(r) * n + i];
+        values[i] = sum;
+    }
+}
+
+std::vector<WallItemTerm> MpiDemExchange::mergeWallTerms(const std::vector<WallItemTerm>& mine)
+{
+    const int bytes = static_cast<int>(mine.size() * sizeof(WallItemTerm));
+    std::vector<int> counts(size_), offsets(size_ + 1, 0);
+    check(MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_), "MPI_Allgather (wall items)");
+    for (int r = 0; r < size_; ++r) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<WallItemTerm> all(offsets[size_] / sizeof(WallItemTerm));
+    check(MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                         comm_),
+          "MPI_Allgatherv (wall items)");
+    // Each rank's terms are in (cell, wall) order already; a cell's items are all on its owner.
+    std::stable_sort(all.begin(), all.end(), [](const WallItemTerm& a, const WallItemTerm& b) {
+        return a.cell != b.cell ? a.cell < b.cell : a.wall < b.wall;
+    });
+    return all;
+}
+
+void MpiDemExchange::checkGhostReach(const CellArrays& cells)
+{
+    double moved2 = 0.0;
+    for (int c = 0; c < cells.size(); ++c)
+        if (owned_[c]) moved2 = std::max(moved2, norm2(cells.position[c] - start_position_[c]));
+    const double moved = std::sqrt(maxOverRanks(moved2));
+    if (!(moved <= allowance_))
+        throw UserError("bondedDemFoam -parallel: a cell has moved " + std::to_string(1e3 * moved) +
+                        " mm since the decomposition, beyond the ghost layer's allowance of " +
+                        std::to_string(1e3 * allowance_) +
+                        " mm; decomposing again during a run is not built yet: run this case serially or "
+                        "stop before the cells move this far");
+}
+
+int MpiDemExchange::ownedCells() const
+{
+    return static_cast<int>(std::count(owned_.begin(), owned_.end(), 1));
+}
+
+std::uint64_t MpiDemExchange::ghostBytesPerStep() const
+{
+    std::uint64_t cells = 0;
+    for (const Neighbour& n : neighbours_) cells += n.send.size();
+    return cells * doubles_per_cell * sizeof(double);
+}
+
+}  // namespace rockfrac::mpi

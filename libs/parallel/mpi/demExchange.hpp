@@ -1,0 +1,76 @@
+#pragma once
+// A DemModel decomposed over MPI ranks (dem/demExchange.hpp says what the model asks).
+//
+// Every rank starts from the same whole model (read from the same case), cuts it by the
+// decomposition of system/decomposeParDict into its own cells and their ghosts, and keeps
+// from then on only those: the cells of another rank whose centroids lie within
+// reach_i + reach_j + margin of one of its own, margin = the lists' skin + twice the
+// allowance (the distance any cell may move from where it was at the decomposition before
+// the ghost layer no longer holds every cell within contact reach; checked at every list
+// build). Before each force evaluation each owner sends its neighbours the state of the
+// cells they hold as ghosts (13 doubles per cell), so every item is computed from the same
+// bits on every rank that lists it.
+//
+//     std::unique_ptr<MpiDemExchange> exchange = decomposeDemModel(model, parameters, comm);
+//     // model now holds this rank's cells and ghosts; step it as before
+#include <mpi.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dem/demExchange.hpp"
+#include "dem/demModel.hpp"
+#include "parallel/decomposition.hpp"
+
+namespace rockfrac::mpi {
+
+class MpiDemExchange final : public DemExchange {
+public:
+    struct Neighbour {
+        int rank = 0;
+        std::vector<int> send;  // my own cells it holds as ghosts (local indices, global order)
+        std::vector<int> recv;  // my ghosts it owns (local indices, global order)
+    };
+    MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell, std::vector<char> owned,
+                   std::vector<Neighbour> neighbours, std::vector<Vec3> start_position, double allowance);
+
+    int rank() const override { return rank_; }
+    void refreshGhosts(CellArrays& cells) override;
+    bool anyRank(bool mine) override;
+    double maxOverRanks(double mine) override;
+    void sumOverRanks(std::vector<double>& values) override;
+    std::vector<WallItemTerm> mergeWallTerms(const std::vector<WallItemTerm>& mine) override;
+    void checkGhostReach(const CellArrays& cells) override;
+    std::int64_t globalCell(int c) const override { return global_cell_[c]; }
+
+    // For the log and the benchmarks.
+    int ownedCells() const;
+    int ghostCells() const { return static_cast<int>(global_cell_.size()) - ownedCells(); }
+    int neighbourRanks() const { return static_cast<int>(neighbours_.size()); }
+    std::uint64_t ghostBytesPerStep() const;  // sent by this rank per force evaluation
+    double allowance() const { return allowance_; }
+
+private:
+    MPI_Comm comm_;
+    int rank_ = 0, size_ = 1;
+    std::vector<std::int64_t> global_cell_;
+    std::vector<char> owned_;
+    std::vector<Neighbour> neighbours_;
+    std::vector<Vec3> start_position_;
+    double allowance_ = 0.0;
+    std::vector<std::vector<double>> send_buffer_, recv_buffer_;
+};
+
+// Cuts `model` (the same whole model on every rank) down to this rank's cells and ghosts and
+// connects it to the others; numberOfSubdomains must equal the number of ranks (UserError).
+// Collective. The returned exchange must outlive the model's steps.
+std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const DecomposeParameters& parameters,
+                                                  MPI_Comm comm);
+
+// One line for the log: the rank's cells, ghosts, neighbours, bytes per step and the allowance.
+std::string describeDecomposition(const MpiDemExchange& exchange, const DecomposeParameters& parameters,
+                                  MPI_Comm comm);
+
+}  // namespace rockfrac::mpi
