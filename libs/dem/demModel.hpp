@@ -127,6 +127,9 @@ public:
     // the state equals that of a model built from the remaining cells. Forces are
     // re-evaluated; the energy leaving (kinetic + strain) is booked in energies().exchanged.
     std::vector<int> removeCells(const std::vector<char>& remove);
+    // The same without the evaluation (forces, energies and lists as they were, the lists
+    // stale): cutting a whole model down to one rank's share (decompose).
+    std::vector<int> removeCellsOnly(const std::vector<char>& remove);
 
     // ---- Bond strengths ----------------------------------------------------
     // Multiply sigma-bar and C of every bond of interface k by factor (> 0); a model
@@ -242,9 +245,11 @@ public:
     // This model now holds one rank's cells (owned[c] != 0) and their ghosts, and takes every
     // decision with the other ranks through `exchange` (kept, not owned). Items are counted
     // where their first cell is owned; energies() and counters() become the sums over the
-    // ranks, with `whole` the whole model's energies at this moment (their cumulative parts
-    // stay with rank 0). Call after removeCells has cut the model down to these cells.
-    void decompose(DemExchange* exchange, const std::vector<char>& owned, const DemEnergies& whole);
+    // ranks. `whole` is the whole model before it was cut down (removeCells): its energies,
+    // counters and force rates at this moment; the cumulative parts stay with rank 0. The
+    // lists are rebuilt at the next force evaluation, where the whole model would build them.
+    void decompose(DemExchange* exchange, const std::vector<char>& owned, const DemEnergies& whole_energies,
+                   const DemCounters& whole_counters, const DemForceRates& whole_rates);
     bool decomposed() const { return exchange_ != nullptr; }
     bool ownsCell(int c) const { return !exchange_ || owned_cell_[c]; }
     // The neighbour lists' skin: pairs within the two bounding radii plus this are listed [m].

@@ -8,7 +8,9 @@
 
 namespace rockfrac {
 
-void DemModel::decompose(DemExchange* exchange, const std::vector<char>& owned, const DemEnergies& whole)
+void DemModel::decompose(DemExchange* exchange, const std::vector<char>& owned,
+                         const DemEnergies& whole_energies, const DemCounters& whole_counters,
+                         const DemForceRates& whole_rates)
 {
     if (static_cast<int>(owned.size()) != cells_.size())
         throw UserError("DemModel::decompose: " + std::to_string(owned.size()) + " ownership flags for " +
@@ -20,22 +22,23 @@ void DemModel::decompose(DemExchange* exchange, const std::vector<char>& owned, 
     for (int k = 0; k < interfaces_.size(); ++k) counted_interface_[k] = owned_cell_[interfaces_.cell_i[k]];
     countPairs();
     countInterfaces();
-    // The cumulative energies of the whole model stay with rank 0; the others add from zero.
-    // The walls' work is booked alike on every rank (from the merged wall powers) and counted
-    // on rank 0 only (reduceOverRanks).
+    // The whole model built its lists, or builds them, at its next force evaluation: so do
+    // the ranks (the lists cut down by removeCells were built where the whole model's were not).
+    interfaces_cracked_at_build_ = counters_.interfaces_cracked;
+    lists_valid_ = false;
+    // The cumulative energies and the powers the next half kick books stay with rank 0; the
+    // others add from zero. The walls' work is booked alike on every rank (from the merged
+    // wall powers) and counted on rank 0 only (reduceOverRanks).
     const bool first = exchange_->rank() == 0;
-    for (auto [mine, all] : {std::pair{&energies_.bond_damping, whole.bond_damping},
-                             {&energies_.contact_damping, whole.contact_damping},
-                             {&energies_.friction, whole.friction},
-                             {&energies_.fracture, whole.fracture},
-                             {&energies_.gravity_work, whole.gravity_work},
-                             {&energies_.exchanged, whole.exchanged}})
-        *mine = first ? all : 0.0;
-    energies_.wall_work = whole.wall_work;
+    energies_ = whole_energies;
+    if (!first)
+        for (double* e : {&energies_.bond_damping, &energies_.contact_damping, &energies_.friction,
+                          &energies_.fracture, &energies_.gravity_work, &energies_.exchanged})
+            *e = 0.0;
+    force_rates_ = first ? whole_rates : DemForceRates{};
+    global_energies_ = whole_energies;
+    global_counters_ = whole_counters;
     energy_floor_ = 0.0;
-    // This rank's share of the current state, counted, and summed over the ranks.
-    computeForces(0.0);
-    measureCells(last_dt_);
 }
 
 // Interfaces: the bonds, broken bonds, open and cracked interfaces this rank counts.

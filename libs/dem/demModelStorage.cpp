@@ -21,6 +21,20 @@ void requireCount(std::size_t got, int expected)
 
 std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
 {
+    const double energy_before = energies_.kinetic() + energies_.stored();
+    std::vector<int> new_index = removeCellsOnly(remove);
+    if (static_cast<int>(new_index.size()) == cells_.size()) return new_index;  // none removed
+    // Forces of the remaining cells without the removed ones; the energy that left
+    // is what the kinetic and stored energies lost.
+    computeForces(0.0);
+    measureCells(last_dt_);
+    energies_.exchanged += energy_before - (energies_.kinetic() + energies_.stored());
+    updateStatus(-1);
+    return new_index;
+}
+
+std::vector<int> DemModel::removeCellsOnly(const std::vector<char>& remove)
+{
     const int n = cells_.size();
     requireCount(remove.size(), n);
     std::vector<int> new_index(n, -1);
@@ -31,7 +45,6 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
         if (keep_cell[c]) new_index[c] = kept++;
     }
     if (kept == n) return new_index;
-    const double energy_before = energies_.kinetic() + energies_.stored();
 
     // Cells, with their core vertex and anchor node ranges.
     keepFlaggedFields(cells_, keep_cell);
@@ -91,12 +104,6 @@ std::vector<int> DemModel::removeCells(const std::vector<char>& remove)
     buildIncidence();
     energy_floor_ = 0.0;
     lists_valid_ = false;
-    // Forces of the remaining cells without the removed ones; the energy that left
-    // is what the kinetic and stored energies lost.
-    computeForces(0.0);
-    measureCells(last_dt_);
-    energies_.exchanged += energy_before - (energies_.kinetic() + energies_.stored());
-    updateStatus(-1);
     return new_index;
 }
 

@@ -82,9 +82,6 @@ public:
 
     // ---- the loop's hooks (core/timeLoop.hpp), in the loop's order
 
-    // A decomposed run writes no time directories yet: it cannot restart.
-    bool canRestart() const override { return decomposer == nullptr; }
-
     long start(bool) override
     {
         if (decomposer) {
@@ -144,21 +141,23 @@ public:
 
     void writeTime(long step) override
     {
-        if (decomposer) return;  // not built yet under -parallel (printSetup says so)
-        backend->download();     // the cell arrays from the device
+        backend->download();  // the cell arrays from the device
+        const DemModel* whole = wholeState();
+        if (!writes()) return;
         // State, then frames, then the time directory is published: a run killed before the
         // commit restarts from the previous time, which writes these frames again.
-        const fs::path staging = runTime.prepareStagingDir(model->time());
-        writeDemState(staging / "demState", *model, step, peakForce, loadingStarted);
-        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, restarted || step > 0);
-        runTime.commitTimeDir(model->time());
+        const fs::path staging = runTime.prepareStagingDir(whole->time());
+        writeDemState(staging / "demState", *whole, step, peakForce, loadingStarted);
+        writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, restarted || step > 0);
+        runTime.commitTimeDir(whole->time());
     }
 
     std::string writeFailure(long step) override
     {
-        if (decomposer) return {};
         backend->download();
-        writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, true);
+        const DemModel* whole = wholeState();
+        if (!writes()) return {};
+        writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, true);
         return "VTK/cells_" + std::to_string(step) + ".vtu";
     }
 
@@ -177,6 +176,8 @@ public:
 
 private:
     bool writes() const { return !decomposer || decomposer->writes(); }
+    // The whole model's state to write (gathered on the writing rank of a decomposed run).
+    const DemModel* wholeState() { return decomposer ? decomposer->gather(*model) : model.get(); }
 
     void placePlates()
     {
@@ -368,8 +369,8 @@ void BondedDemRun::printSetup() const
         std::printf("Restart from time %s (step %ld)\n", runTime.startTimeName().c_str(), restartStep);
     if (decomposer)
         std::printf(
-            "Parallel: writes postProcessing/plateForce only; time directories, VTK frames and "
-            "restarts under -parallel are not built yet\n");
+            "Parallel: rank 0 gathers the state at write times and writes the time directories and VTK "
+            "frames a serial run writes (a restart may use another number of ranks)\n");
 }
 
 void BondedDemRun::report(bool)

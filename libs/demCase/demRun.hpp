@@ -20,13 +20,15 @@ namespace rockfrac {
 class DemModel;
 
 // A decomposed run (bondedDemFoam -parallel; the MPI side is parallel/mpi/demExchange.hpp):
-// after the set-up, every rank cuts the whole model down to its own cells and ghosts; the
-// writing rank alone writes postProcessing.
+// after the set-up, every rank cuts the whole model down to its own cells and ghosts; at write
+// times the writing rank gathers the whole state and writes what a serial run writes.
 class DemDecomposer {
 public:
     virtual ~DemDecomposer() = default;
     virtual void decompose(DemModel& model) = 0;  // collective
     virtual bool writes() const = 0;
+    // Collective: the whole model's state on the writing rank (null on the others).
+    virtual const DemModel* gather(const DemModel& local) = 0;
     virtual std::string describe() const = 0;  // the log's line, after decompose
 };
 

@@ -70,7 +70,12 @@ public:
     }
     void decompose(DemModel& model) override
     {
-        exchange_ = mpi::decomposeDemModel(model, parameters_, MPI_COMM_WORLD);
+        exchange_ = mpi::decomposeDemModel(model, parameters_, MPI_COMM_WORLD, &whole_);
+    }
+    const DemModel* gather(const DemModel& local) override
+    {
+        mpi::gatherModel(local, *exchange_, whole_.get());
+        return whole_.get();
     }
     bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
     std::string describe() const override
@@ -81,6 +86,7 @@ public:
 private:
     DecomposeParameters parameters_;
     std::unique_ptr<mpi::MpiDemExchange> exchange_;
+    std::unique_ptr<DemModel> whole_;  // rank 0: the whole model, gathered into at write times
 };
 
 bool parallelRequested(int argc, char** argv)

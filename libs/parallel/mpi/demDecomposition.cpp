@@ -28,7 +28,7 @@ std::vector<double> cellWeights(const DemModel& model, bool cost)
 }  // namespace
 
 std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const DecomposeParameters& parameters,
-                                                  MPI_Comm comm)
+                                                  MPI_Comm comm, std::unique_ptr<DemModel>* whole)
 {
     const int n_ranks = size(comm), me = rank(comm);
     if (parameters.n_subdomains != n_ranks)
@@ -70,8 +70,18 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
 
     std::vector<char> remove(n);
     for (int c = 0; c < n; ++c) remove[c] = !held[me][c];
-    const DemEnergies whole = model.energies();
-    const std::vector<int> local = model.removeCells(remove);
+    // removeCellsOnly keeps the forces of a restored state (the next step continues from them,
+    // as the serial run does), the step check's bound and the histories as they are.
+    if (whole && me == 0) *whole = std::make_unique<DemModel>(model);
+    const DemEnergies energies = model.energies();
+    const DemCounters counters = model.counters();
+    const DemForceRates rates = model.forceRates();
+    std::vector<int> global_interface;
+    const InterfaceArrays& f = model.interfaces();
+    for (int k = 0; k < f.size(); ++k)
+        if (held[me][f.cell_i[k]] && held[me][f.cell_j[k]]) global_interface.push_back(k);
+
+    const std::vector<int> local = model.removeCellsOnly(remove);
     std::vector<std::int64_t> global_cell;
     std::vector<char> owned;
     for (int c = 0; c < n; ++c)
@@ -92,9 +102,10 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
     }
     const CellArrays& mine = model.cells();
     std::vector<Vec3> start(mine.position.begin(), mine.position.end());
-    auto exchange = std::make_unique<MpiDemExchange>(comm, std::move(global_cell), owned,
-                                                     std::move(neighbours), std::move(start), allowance);
-    model.decompose(exchange.get(), owned, whole);
+    auto exchange =
+        std::make_unique<MpiDemExchange>(comm, std::move(global_cell), std::move(global_interface), owned,
+                                         std::move(neighbours), std::move(start), allowance);
+    model.decompose(exchange.get(), owned, energies, counters, rates);
     return exchange;
 }
 

@@ -42,11 +42,13 @@ void unpackCell(const double* in, CellArrays& c, int i)
 
 }  // namespace
 
-MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell, std::vector<char> owned,
+MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell,
+                               std::vector<int> global_interface, std::vector<char> owned,
                                std::vector<Neighbour> neighbours, std::vector<Vec3> start_position,
                                double allowance)
     : comm_(comm),
       global_cell_(std::move(global_cell)),
+      global_interface_(std::move(global_interface)),
       owned_(std::move(owned)),
       neighbours_(std::move(neighbours)),
       start_position_(std::move(start_position)),

@@ -33,8 +33,9 @@ public:
         std::vector<int> send;  // my own cells it holds as ghosts (local indices, global order)
         std::vector<int> recv;  // my ghosts it owns (local indices, global order)
     };
-    MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell, std::vector<char> owned,
-                   std::vector<Neighbour> neighbours, std::vector<Vec3> start_position, double allowance);
+    MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell, std::vector<int> global_interface,
+                   std::vector<char> owned, std::vector<Neighbour> neighbours,
+                   std::vector<Vec3> start_position, double allowance);
 
     int rank() const override { return rank_; }
     void refreshGhosts(CellArrays& cells) override;
@@ -44,6 +45,9 @@ public:
     std::vector<WallItemTerm> mergeWallTerms(const std::vector<WallItemTerm>& mine) override;
     void checkGhostReach(const CellArrays& cells) override;
     std::int64_t globalCell(int c) const override { return global_cell_[c]; }
+    int globalInterface(int k) const { return global_interface_[k]; }
+    bool owns(int c) const { return owned_[c] != 0; }
+    MPI_Comm comm() const { return comm_; }
 
     // For the log and the benchmarks.
     int ownedCells() const;
@@ -56,6 +60,7 @@ private:
     MPI_Comm comm_;
     int rank_ = 0, size_ = 1;
     std::vector<std::int64_t> global_cell_;
+    std::vector<int> global_interface_;
     std::vector<char> owned_;
     std::vector<Neighbour> neighbours_;
     std::vector<Vec3> start_position_;
@@ -65,9 +70,17 @@ private:
 
 // Cuts `model` (the same whole model on every rank) down to this rank's cells and ghosts and
 // connects it to the others; numberOfSubdomains must equal the number of ranks (UserError).
+// A model restored from a state file keeps its forces (the next step continues bitwise).
+// `whole`, when given, gets on rank 0 a copy of the whole model to gather into (gatherModel).
 // Collective. The returned exchange must outlive the model's steps.
 std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const DecomposeParameters& parameters,
-                                                  MPI_Comm comm);
+                                                  MPI_Comm comm, std::unique_ptr<DemModel>* whole = nullptr);
+
+// The state of every rank's cells, bonds, contacts and walls, the clock, energies and force
+// rates, set into rank 0's copy of the whole model (the arrays a state file and the VTK
+// frames are written from: <time>/demState as the serial run writes it). Collective; `whole`
+// is used on rank 0 only.
+void gatherModel(const DemModel& local, MpiDemExchange& exchange, DemModel* whole);
 
 // One line for the log: the rank's cells, ghosts, neighbours, bytes per step and the allowance.
 std::string describeDecomposition(const MpiDemExchange& exchange, const DecomposeParameters& parameters,
