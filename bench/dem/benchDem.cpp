@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "benchBlock.hpp"
 #include "core/dictionary.hpp"
 #include "core/random.hpp"
 #include "core/timeControl.hpp"
@@ -76,29 +77,13 @@ void header()
 
 void intactBlock(int nCells, int steps, bool cuda, double given_dt, CellOrder order)
 {
-    // A block with the BDT's cell size (meso constant 7.25e-8 m^3), pd 0.6 of the spacing.
-    const double volume = nCells * 7.25e-8;
-    const double side = std::cbrt(volume / 2.0);
-    const Domain domain = Domain::box({0, 0, 0}, {2 * side, side, side});
-    const double spacing = std::cbrt(7.25e-8);
-    // Cells numbered along a Morton curve (voronoiMeshDict cellOrder morton), as a large
-    // mesh should be; -order seeding keeps the random order of the seeds.
-    const VoronoiMesh mesh = generateVoronoiMesh(domain, nCells, 0.6 * spacing, 7, 0.1, order);
-    DemParameters p;
-    VoronoiQnscBondLaw::Parameters q;
-    q.tensile_strength = 1e12;  // intact: no bond ever breaks
-    q.cohesion = 1.5e12;
-    p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
-    p.gravity = {0, 0, 0};
-    p.damping_reading = DampingReading::criticalFraction;
-    p.bond_damping = 0.05;
+    const VoronoiMesh mesh = benchBlockMesh(nCells, order);
+    const DemParameters p = benchBlockParameters();
     const std::string name = "intact block " + std::to_string(nCells);
     // One model for every thread count (set-up, the critical step's power iteration and the
     // first neighbour lists cost more than the timed steps at 1e5 cells and beyond).
     DemModel model(mesh, p);
-    SplitMix64 random(3);
-    for (int c = 0; c < model.cells().size(); ++c)
-        model.setCellVelocity(c, {random.uniform(-1e-3, 1e-3), random.uniform(-1e-3, 1e-3), 0}, {});
+    setBenchBlockVelocities(model);
     const double dt = given_dt > 0.0 ? given_dt : 0.5 * model.criticalTimeStep().value;
     if (cuda) {
         CudaDemModel device(model);

@@ -1,6 +1,7 @@
 #include "parallel/mpi/demExchange.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -42,6 +43,19 @@ void unpackCell(const double* in, CellArrays& c, int i)
 
 }  // namespace
 
+class MpiDemExchange::Timed {
+public:
+    explicit Timed(MpiDemExchange& e) : e_(e), start_(std::chrono::steady_clock::now()) { ++e_.exchange_calls_; }
+    ~Timed()
+    {
+        e_.exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    MpiDemExchange& e_;
+    std::chrono::steady_clock::time_point start_;
+};
+
 MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_cell,
                                std::vector<int> global_interface, std::vector<char> owned,
                                std::vector<Neighbour> neighbours, std::vector<Vec3> start_position,
@@ -62,6 +76,7 @@ MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_c
 
 void MpiDemExchange::refreshGhosts(CellArrays& cells)
 {
+    const Timed timed(*this);
     std::vector<MPI_Request> requests;
     requests.reserve(2 * neighbours_.size());
     for (std::size_t k = 0; k < neighbours_.size(); ++k) {
@@ -96,6 +111,7 @@ void MpiDemExchange::refreshGhosts(CellArrays& cells)
 
 bool MpiDemExchange::anyRank(bool mine)
 {
+    const Timed timed(*this);
     int value = mine ? 1 : 0;
     check(MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, MPI_LOR, comm_), "MPI_Allreduce (or)");
     return value != 0;
@@ -103,6 +119,7 @@ bool MpiDemExchange::anyRank(bool mine)
 
 double MpiDemExchange::maxOverRanks(double mine)
 {
+    const Timed timed(*this);
     check(MPI_Allreduce(MPI_IN_PLACE, &mine, 1, MPI_DOUBLE, MPI_MAX, comm_), "MPI_Allreduce (max)");
     return mine;
 }
@@ -111,6 +128,7 @@ double MpiDemExchange::maxOverRanks(double mine)
 // MPI library's reduction tree.
 void MpiDemExchange::sumOverRanks(std::vector<double>& values)
 {
+    const Timed timed(*this);
     const int n = static_cast<int>(values.size());
     std::vector<double> all(static_cast<std::size_t>(n) * size_);
     check(MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, comm_),
@@ -124,6 +142,7 @@ void MpiDemExchange::sumOverRanks(std::vector<double>& values)
 
 std::vector<WallItemTerm> MpiDemExchange::mergeWallTerms(const std::vector<WallItemTerm>& mine)
 {
+    const Timed timed(*this);
     const int bytes = static_cast<int>(mine.size() * sizeof(WallItemTerm));
     std::vector<int> counts(size_), offsets(size_ + 1, 0);
     check(MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_), "MPI_Allgather (wall items)");

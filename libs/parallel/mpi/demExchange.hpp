@@ -55,6 +55,10 @@ public:
     int neighbourRanks() const { return static_cast<int>(neighbours_.size()); }
     std::uint64_t ghostBytesPerStep() const;  // sent by this rank per force evaluation
     double allowance() const { return allowance_; }
+    // Wall-clock seconds this rank spent in the exchange's calls (messages, collectives and the
+    // waiting for slower ranks in them), and how many calls, since the start.
+    double exchangeSeconds() const { return exchange_seconds_; }
+    long exchangeCalls() const { return exchange_calls_; }
 
 private:
     MPI_Comm comm_;
@@ -66,6 +70,9 @@ private:
     std::vector<Vec3> start_position_;
     double allowance_ = 0.0;
     std::vector<std::vector<double>> send_buffer_, recv_buffer_;
+    double exchange_seconds_ = 0.0;
+    long exchange_calls_ = 0;
+    class Timed;  // adds a call's wall time to exchange_seconds_
 };
 
 // Cuts `model` (the same whole model on every rank) down to this rank's cells and ghosts and
