@@ -107,7 +107,8 @@ std::string runCasesDictText(const CalibrationStudy& study, const RunSet& set)
       << "; do not edit (it is rewritten).\n"
       << "template   " << quoted(fs::proximate(study.templateDirectory(), set.directory).string()) << ";\n"
       << "command    " << quoted(study.command) << ";\n"
-      << "jobs       " << study.jobs << ";\n\nparameters\n{\n";
+      << "jobs       " << study.jobs << ";\n"
+      << schedulerText(study.scheduler) << "\nparameters\n{\n";
     for (std::size_t i = 0; i < study.parameters.size(); ++i) {
         const auto& p = study.parameters[i];
         d << "    " << p.name << " { file " << quoted(p.file.string()) << "; entry " << p.entry << "; unit "

@@ -21,6 +21,7 @@
 #include "core/error.hpp"
 #include "core/subprocess.hpp"
 #include "members.hpp"
+#include "slurmBatch.hpp"
 
 namespace rockfrac::runcases {
 
@@ -249,6 +250,7 @@ BatchSummary runBatch(const Study& study, int jobs)
 {
     StudyLock lock(study);
     StopSignals signals;
+    if (study.scheduler.isSlurm()) return runSlurmBatch(study, stopSignal);
     return Batch(study, jobs).run();
 }
 
