@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Studies through a real Slurm: a private single-node cluster (slurmFunctions: munged,
+# slurmctld, slurmd on 127.0.0.1 with 2 CPUs, everything under the scratch directory)
+# runs runCases studies with 'scheduler slurm;':
+#  1. the study's results.dat is byte-identical to the same study run with 'scheduler local';
+#  2. a member made to fail is reported failed with its Slurm state (FAILED) and its logs;
+#  3. a driver killed hard (SIGKILL) leaves its array in Slurm: the next runCases submits
+#     nothing, waits for the queued members and collects those that ended meanwhile; a
+#     SIGTERM cancels the array (scancel), exits 143 and squeue lists no job of the study;
+#     the run after it finishes the study without re-running a member that was done;
+#  4. calibrateModel, with one line of its dictionary changed ('scheduler slurm;'), runs its
+#     design through Slurm and calibrates the same values as locally.
+# Skipped (exit 77) only when the Slurm and munge packages are not installed.
+source "$(dirname "$0")/../caseTestFunctions"
+source "$(dirname "$0")/studyFunctions"
+source "$(dirname "$0")/slurmFunctions"
+export OMP_NUM_THREADS=1
+requireSlurmPackages
+startSlurm "$work/slurm"
+
+# useSlurm <study dir>: 'scheduler slurm;' and its settings in the study's runCasesDict.
+useSlurm()
+{
+    cat >> "$1/system/runCasesDict" <<DICT
+scheduler  slurm;
+slurm      { partition rockfrac; time 00:05:00; cpusPerTask 1; }
+DICT
+}
+noJobsLeft() { [ -z "$(queuedJobs)" ] || fail "squeue still lists jobs: $(queuedJobs)"; }
+
+echo "== 1. local and Slurm give the same table"
+makeStudy "$work/local" "1 2 3" "1 2"
+runCases -case "$work/local" > "$work/log.local" || fail "the local study failed"
+makeStudy "$work/viaSlurm" "1 2 3" "1 2"
+useSlurm "$work/viaSlurm"
+runCases -case "$work/viaSlurm" > "$work/log.viaSlurm" || { cat "$work/log.viaSlurm"; fail "the Slurm study failed"; }
+cat "$work/log.viaSlurm"
+grep -q "submitted 6 member(s) as Slurm job array" "$work/log.viaSlurm" || fail "the 6 members were not one array"
+cmp "$work/local/results.dat" "$work/viaSlurm/results.dat" || fail "results.dat differs between local and Slurm"
+[ -s "$work/viaSlurm/members/0000/log.slurm" ] || [ -f "$work/viaSlurm/members/0000/log.slurm" ] ||
+    fail "no Slurm log in the member directory"
+noJobsLeft
+
+echo "== 2. a failing member is reported with its Slurm state"
+makeStudy "$work/failing" "1 2" "1" 2
+useSlurm "$work/failing"
+rc=0; runCases -case "$work/failing" > "$work/log.failing" || rc=$?
+cat "$work/log.failing"
+[ "$rc" -eq 1 ] || fail "runCases exited $rc with one failed member, expected 1"
+grep -q "^failed 0001 .*exited with 3 (Slurm state FAILED)" "$work/log.failing" ||
+    fail "the failed member's line lacks its exit code and Slurm state"
+grep -q 'Slurm state FAILED' "$work/failing/members/0001/runCases.status" || fail "the status lacks the Slurm state"
+grep -q "fails on purpose" "$work/failing/members/0001/log.runCases" || fail "the member's log lacks its error"
+[ "$(column "$work/failing/results.dat" status | tr '\n' ' ')" = "done failed " ] || fail "wrong states in the table"
+noJobsLeft
+
+echo "== 3. a killed driver, a resumed one, a cancelled one"
+study="$work/interrupted"
+makeStudy "$study" "1 2 3 4" "1 2" none 2    # 8 members of 2 s, 2 at a time on 2 CPUs
+useSlurm "$study"
+runCases -case "$study" > "$work/log.1" &
+pid=$!
+for _ in $(seq 300); do    # until 2 members are done
+    [ "$(grep -c '^done ' "$work/log.1" 2> /dev/null)" -ge 2 ] && break
+    sleep 0.1
+done
+kill -KILL "$pid"; wait "$pid" 2> /dev/null || true
+cat "$work/log.1"
+doneBefore=$(grep '^done ' "$work/log.1" | awk '{ print $2 }')
+[ -n "$doneBefore" ] || fail "no member finished before the kill"
+[ -n "$(queuedJobs)" ] || fail "the killed driver's array is no longer in Slurm"
+
+runCases -case "$study" > "$work/log.2" &
+pid=$!
+for _ in $(seq 300); do    # until one more member is done
+    [ "$(grep -c '^done ' "$work/log.2" 2> /dev/null)" -ge 1 ] && break
+    sleep 0.1
+done
+kill -TERM "$pid"
+rc=0; wait "$pid" || rc=$?
+cat "$work/log.2"
+[ "$rc" -eq 143 ] || fail "the cancelled runCases exited $rc, expected 143"
+grep -q "already submitted to Slurm, 0 to submit" "$work/log.2" || fail "the resumed runCases submitted members again"
+grep -q "^submitted " "$work/log.2" && fail "the resumed runCases submitted a member"
+grep -q "cancelling Slurm job array" "$work/log.2" || fail "SIGTERM did not cancel the array"
+noJobsLeft
+grep -q "submitted" "$study/results.dat" && fail "a member is still 'submitted' after the cancel"
+
+runCases -case "$study" > "$work/log.3" || { cat "$work/log.3"; fail "the study did not finish after the cancel"; }
+cat "$work/log.3"
+for m in $doneBefore; do
+    [ "$(wc -l < "$study/counts/$m")" -eq 1 ] || fail "member $m was done before the kill but ran again"
+    grep -q "^submitted $m " "$work/log.3" && fail "member $m was submitted again"
+done
+[ "$(column "$study/results.dat" status | sort -u)" = "done" ] || fail "not every member is done"
+awk -F'\t' '!/^#/ && $4 != 2*$2 + $3 { exit 1 }' "$study/results.dat" || fail "a result is wrong"
+noJobsLeft
+
+echo "runCases through Slurm ok"
