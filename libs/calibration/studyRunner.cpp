@@ -177,6 +177,7 @@ fs::path runCasesExecutable()
 
 void prepareTemplate(const CalibrationStudy& study)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();  // before anything is written
     const fs::path dir = study.templateDirectory(), stamp = dir / ".prepared";
     if (fs::exists(stamp) && fs::last_write_time(stamp) >= newestInput(study.targetCase)) return;
     fs::remove_all(dir);
@@ -208,6 +209,7 @@ void prepareTemplate(const CalibrationStudy& study)
 
 std::vector<MemberRun> runSet(const CalibrationStudy& study, const RunSet& set, int jobs)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();
     fs::create_directories(set.directory / "system");
     const fs::path dictFile = set.directory / "system/runCasesDict";
     const std::string text = runCasesDictText(study, set);

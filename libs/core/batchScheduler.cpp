@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/knownEntries.hpp"
+#include "core/subprocess.hpp"
 
 namespace rockfrac {
 
@@ -128,6 +129,15 @@ SchedulerSettings readScheduler(const Dictionary& dict)
                         "time 00:30:00; }'");
     if (slurm) settings.slurm = readSlurm(*slurm->dict);
     return settings;
+}
+
+void requireSlurmCommands()
+{
+    for (const char* tool : {"sbatch", "squeue", "scancel"})
+        if (!findExecutable(tool))
+            throw UserError(std::string("scheduler slurm: '") + tool +
+                            "' is not on PATH; run where Slurm's commands are (a login node, or inside an "
+                            "allocation), or set 'scheduler local;' to run the members on this machine");
 }
 
 std::string schedulerText(const SchedulerSettings& settings)

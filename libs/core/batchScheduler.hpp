@@ -47,4 +47,7 @@ SchedulerSettings readScheduler(const Dictionary& dict);
 // runCases studies that calibrateModel, explainGap and makeTwinData write.
 std::string schedulerText(const SchedulerSettings& settings);
 
+// UserError unless sbatch, squeue and scancel are on PATH (checked before anything is written).
+void requireSlurmCommands();
+
 }  // namespace rockfrac

@@ -96,4 +96,44 @@ done
 awk -F'\t' '!/^#/ && $4 != 2*$2 + $3 { exit 1 }' "$study/results.dat" || fail "a result is wrong"
 noJobsLeft
 
-echo "runCases through Slurm ok"
+echo "== 4. calibrateModel through Slurm: one line of calibrationDict changed"
+# A 60-cell Brazilian disc, one parameter, a 3-level response surface: 4 DEM runs of ~1 s.
+mkdir -p "$work/calLocal/system"
+copyTutorial tutorials/BDT/granite "$work/calLocal/bdt"
+caseDict -case "$work/calLocal/bdt" system/voronoiMeshDict -entry nCells -set 60 > /dev/null
+cat > "$work/calLocal/measurements" <<DICT
+FoamFile { format ascii; class dictionary; object measurements; }
+test BDT; material twin;
+specimens { twin { failureLoad [N] 12000; } }
+DICT
+cat > "$work/calLocal/system/calibrationDict" <<DICT
+FoamFile { format ascii; class dictionary; object calibrationDict; }
+model        dem;
+case         "bdt";
+measurements "measurements";
+prepare      "meshRock > log.meshRock 2>&1 && voronoiMesh > log.voronoiMesh 2>&1";
+command      "bondedDemFoam";
+parameters   { tensileStrength { entry bond/voronoiQNSC/tensileStrength; range (15e6 35e6); unit Pa; } }
+responseSurface { levels 3; }
+target       { response "postProcessing/plateForce/0/plateForce.dat"; }
+DICT
+cp -r "$work/calLocal" "$work/calSlurm"
+(cd "$work/calLocal" && calibrateModel -case . -noWrite > log.calibrateModel 2>&1) ||
+    fail "local calibration: $(tail -3 "$work/calLocal/log.calibrateModel")"
+sed -i 's/^command .*/&\nscheduler    slurm;/' "$work/calSlurm/system/calibrationDict"
+diff "$work/calLocal/system/calibrationDict" "$work/calSlurm/system/calibrationDict" || true
+(cd "$work/calSlurm" && calibrateModel -case . -noWrite > log.calibrateModel 2>&1) ||
+    fail "calibration through Slurm: $(tail -3 "$work/calSlurm/log.calibrateModel")"
+grep "calibrated" "$work/calSlurm/log.calibrateModel"
+grep -q "submitted 3 member(s) as Slurm job array" "$work/calSlurm/runs/responseSurface/design/log.runCases" ||
+    fail "the design did not go through Slurm"
+for t in design/results.dat confirmation/results.dat; do
+    cmp "$work/calLocal/runs/responseSurface/$t" "$work/calSlurm/runs/responseSurface/$t" ||
+        fail "runs/responseSurface/$t differs between local and Slurm"
+done
+diff <(grep -v "date\|wallTime" "$work/calLocal/calibratedValues.responseSurface") \
+    <(grep -v "date\|wallTime" "$work/calSlurm/calibratedValues.responseSurface" | sed s/calSlurm/calLocal/) ||
+    fail "calibrateModel calibrated other values through Slurm"
+noJobsLeft
+
+echo "runCases and calibrateModel through Slurm ok"

@@ -248,6 +248,7 @@ private:
 
 BatchSummary runBatch(const Study& study, int jobs)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();  // before the lock file is made
     StudyLock lock(study);
     StopSignals signals;
     if (study.scheduler.isSlurm()) return runSlurmBatch(study, stopSignal);

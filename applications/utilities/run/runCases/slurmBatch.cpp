@@ -110,7 +110,6 @@ public:
 
     BatchSummary run()
     {
-        requireSlurm();
         std::vector<const MemberDesign*> toSubmit = planMembers();
         writeTable();
         if (!toSubmit.empty() && !stop_) submit(toSubmit);
@@ -127,16 +126,6 @@ private:
         Clock::time_point since;
         int misses = 0;  // polls that found the task gone without its exit code
     };
-
-    static void requireSlurm()
-    {
-        for (const char* tool : {"sbatch", "squeue", "scancel"})
-            if (!findExecutable(tool))
-                throw UserError(std::string("scheduler slurm: '") + tool +
-                                "' is not on PATH; run runCases where Slurm's commands are (a login node, "
-                                "or inside an allocation), or set 'scheduler local;' to run the members on "
-                                "this machine");
-    }
 
     fs::path exitFile(const MemberDesign& member) const { return members_ / member.id / "runCases.exit"; }
 
