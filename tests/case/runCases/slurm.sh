@@ -9,7 +9,8 @@
 #     SIGTERM cancels the array (scancel), exits 143 and squeue lists no job of the study;
 #     the run after it finishes the study without re-running a member that was done;
 #  4. calibrateModel, with one line of its dictionary changed ('scheduler slurm;'), runs its
-#     design through Slurm and calibrates the same values as locally.
+#     design through Slurm and calibrates the same values as locally;
+#  5. explainGap likewise: the same run tables and the same result file.
 # Skipped (exit 77) only when the Slurm and munge packages are not installed.
 source "$(dirname "$0")/../caseTestFunctions"
 source "$(dirname "$0")/studyFunctions"
@@ -136,4 +137,31 @@ diff <(grep -v "date\|wallTime" "$work/calLocal/calibratedValues.responseSurface
     fail "calibrateModel calibrated other values through Slurm"
 noJobsLeft
 
-echo "runCases and calibrateModel through Slurm ok"
+echo "== 5. explainGap through Slurm: one line of explainGapDict changed"
+# The tutorial's paperBDT study at its smallest: 2 seeds, one effect (6 sets of 2 runs).
+copyTutorial tutorials/explainGap "$work/exLocal"
+scalePlateSpeed "$work/exLocal/bdt" 4    # a quarter of the steps, at any case size
+sed -i -e "s#^measurements .*#measurements \"$src/cases/experiments/BDT/granite/measurements\";#" \
+    -e "s/^seeds .*/seeds { file system\/voronoiMeshDict; entry seed; values (1 2); }/" \
+    -e "s/^effects .*/effects (contactCrumbling);/" "$work/exLocal/paperBDT/system/explainGapDict"
+grep -q "values (1 2); }" "$work/exLocal/paperBDT/system/explainGapDict" || fail "the seeds did not apply"
+cp -r "$work/exLocal" "$work/exSlurm"
+(cd "$work/exLocal" && explainGap -case paperBDT > log.explainGap 2>&1) ||
+    fail "local explainGap: $(tail -3 "$work/exLocal/log.explainGap")"
+sed -i 's/^command .*/&\nscheduler     slurm;/' "$work/exSlurm/paperBDT/system/explainGapDict"
+diff "$work/exLocal/paperBDT/system/explainGapDict" "$work/exSlurm/paperBDT/system/explainGapDict" || true
+(cd "$work/exSlurm" && explainGap -case paperBDT > log.explainGap 2>&1) ||
+    fail "explainGap through Slurm: $(tail -3 "$work/exSlurm/log.explainGap")"
+tail -2 "$work/exSlurm/log.explainGap"
+arrays=$(cat "$work"/exSlurm/study/runs/*/log.runCases | grep -c "as Slurm job array")
+tables=$(ls "$work"/exLocal/study/runs/*/results.dat | wc -l)
+[ "$arrays" -eq "$tables" ] || fail "$arrays Slurm arrays for $tables sets of runs"
+for t in "$work"/exLocal/study/runs/*/results.dat; do
+    cmp "$t" "$work/exSlurm/${t#"$work"/exLocal/}" || fail "${t#"$work"/exLocal/} differs between local and Slurm"
+done
+diff <(grep -v "date" "$work/exLocal/paperBDT/explainGap.result") \
+    <(grep -v "date" "$work/exSlurm/paperBDT/explainGap.result") || fail "explainGap's result differs through Slurm"
+echo "explainGap: $tables sets of runs through Slurm, the same tables and result as locally"
+noJobsLeft
+
+echo "runCases, calibrateModel and explainGap through Slurm ok"
