@@ -129,6 +129,11 @@ private:
                 ++summary_.alreadyDone;
                 continue;
             }
+            if (status && status->state == "submitted")
+                std::cout << "warning: member " << member.id << " was submitted to Slurm as "
+                          << status->slurmJob
+                          << " by a runCases that did not finish; it runs here now (scancel "
+                          << status->slurmJob << " if squeue still lists it)" << std::endl;
             queue_.push_back(&member);
         }
         for (const MemberDesign* member : queue_) prepareMember(study_, *member);
