@@ -3,7 +3,8 @@
 # slurmctld, slurmd on 127.0.0.1 with 2 CPUs, everything under the scratch directory)
 # runs runCases studies with 'scheduler slurm;':
 #  1. the study's results.dat is byte-identical to the same study run with 'scheduler local';
-#  2. a member made to fail is reported failed with its Slurm state (FAILED) and its logs;
+#  2. a member made to fail is reported failed with its Slurm state (FAILED) and its logs, one
+#     whose task is cancelled behind runCases' back with CANCELLED;
 #  3. a driver killed hard (SIGKILL) leaves its array in Slurm: the next runCases submits
 #     nothing, waits for the queued members and collects those that ended meanwhile; a
 #     SIGTERM cancels the array (scancel), exits 143 and squeue lists no job of the study;
@@ -53,6 +54,27 @@ grep -q "^failed 0001 .*exited with 3 (Slurm state FAILED)" "$work/log.failing" 
 grep -q 'Slurm state FAILED' "$work/failing/members/0001/runCases.status" || fail "the status lacks the Slurm state"
 grep -q "fails on purpose" "$work/failing/members/0001/log.runCases" || fail "the member's log lacks its error"
 [ "$(column "$work/failing/results.dat" status | tr '\n' ' ')" = "done failed " ] || fail "wrong states in the table"
+noJobsLeft
+
+# A task cancelled by someone else (as a time limit or a node failure would end it): the
+# member never writes its exit code and is failed with the state Slurm gives it.
+makeStudy "$work/cancelled" "1 2" "1" none 5
+useSlurm "$work/cancelled"
+runCases -case "$work/cancelled" > "$work/log.cancelled" &
+pid=$!
+for _ in $(seq 300); do    # until member 0001 runs
+    task=$(queuedJobs | awk '$1 ~ /_1$/ && $2 == "RUNNING" { print $1 }')
+    [ -n "$task" ] && break
+    sleep 0.1
+done
+[ -n "$task" ] || fail "member 0001 never ran: $(queuedJobs)"
+scancel "$task"
+rc=0; wait "$pid" || rc=$?
+cat "$work/log.cancelled"
+[ "$rc" -eq 1 ] || fail "runCases exited $rc with one cancelled member, expected 1"
+grep -q "^failed 0001 .*ended before the command did (Slurm state CANCELLED)" "$work/log.cancelled" ||
+    fail "the cancelled member's line lacks its Slurm state"
+grep -q "^done 0000 " "$work/log.cancelled" || fail "the other member did not finish"
 noJobsLeft
 
 echo "== 3. a killed driver, a resumed one, a cancelled one"

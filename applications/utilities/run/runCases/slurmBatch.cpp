@@ -280,15 +280,17 @@ private:
         }
     }
 
-    // Finish the members whose task squeue no longer lists; true when any ended.
+    // Finish the members whose task squeue no longer lists; true when any left squeue
+    // (the next poll comes soon).
     bool collectEnded(const std::set<std::string>& queued, bool stopping)
     {
-        const std::size_t before = waiting_.size();
+        bool left = false;
         for (auto it = waiting_.begin(); it != waiting_.end();) {
             if (queued.count(it->task)) {
                 ++it;
                 continue;
             }
+            left = true;
             const std::optional<int> code = readExitFile(exitFile(*it->member));
             // On a shared file system the exit file may show up a little after the
             // task has left squeue: one more poll before the member counts as lost.
@@ -299,7 +301,7 @@ private:
             finish(*it, code, stopping);
             it = waiting_.erase(it);
         }
-        return waiting_.size() != before;
+        return left;
     }
 
     // The state Slurm gives the task: scontrol (recent jobs), else sacct (accounting).
