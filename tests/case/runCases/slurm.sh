@@ -61,7 +61,7 @@ noJobsLeft
 makeStudy "$work/cancelled" "1 2" "1" none 5
 useSlurm "$work/cancelled"
 runCases -case "$work/cancelled" > "$work/log.cancelled" &
-pid=$!
+pid=$!; driverPid=$pid
 for _ in $(seq 300); do    # until member 0001 runs
     task=$(queuedJobs | awk '$1 ~ /_1$/ && $2 == "RUNNING" { print $1 }')
     [ -n "$task" ] && break
@@ -69,7 +69,7 @@ for _ in $(seq 300); do    # until member 0001 runs
 done
 [ -n "$task" ] || fail "member 0001 never ran: $(queuedJobs)"
 scancel "$task"
-rc=0; wait "$pid" || rc=$?
+rc=0; wait "$pid" || rc=$?; driverPid=""
 cat "$work/log.cancelled"
 [ "$rc" -eq 1 ] || fail "runCases exited $rc with one cancelled member, expected 1"
 grep -q "^failed 0001 .*ended before the command did (Slurm state CANCELLED)" "$work/log.cancelled" ||
@@ -82,25 +82,25 @@ study="$work/interrupted"
 makeStudy "$study" "1 2 3 4" "1 2" none 2    # 8 members of 2 s, 2 at a time on 2 CPUs
 useSlurm "$study"
 runCases -case "$study" > "$work/log.1" &
-pid=$!
+pid=$!; driverPid=$pid
 for _ in $(seq 300); do    # until 2 members are done
     [ "$(grep -c '^done ' "$work/log.1" 2> /dev/null)" -ge 2 ] && break
     sleep 0.1
 done
-kill -KILL "$pid"; wait "$pid" 2> /dev/null || true
+kill -KILL "$pid"; wait "$pid" 2> /dev/null || true; driverPid=""
 cat "$work/log.1"
 doneBefore=$(grep '^done ' "$work/log.1" | awk '{ print $2 }')
 [ -n "$doneBefore" ] || fail "no member finished before the kill"
 [ -n "$(queuedJobs)" ] || fail "the killed driver's array is no longer in Slurm"
 
 runCases -case "$study" > "$work/log.2" &
-pid=$!
+pid=$!; driverPid=$pid
 for _ in $(seq 300); do    # until one more member is done
     [ "$(grep -c '^done ' "$work/log.2" 2> /dev/null)" -ge 1 ] && break
     sleep 0.1
 done
 kill -TERM "$pid"
-rc=0; wait "$pid" || rc=$?
+rc=0; wait "$pid" || rc=$?; driverPid=""
 cat "$work/log.2"
 [ "$rc" -eq 143 ] || fail "the cancelled runCases exited $rc, expected 143"
 grep -q "already submitted to Slurm, 0 to submit" "$work/log.2" || fail "the resumed runCases submitted members again"
