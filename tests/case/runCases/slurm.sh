@@ -3,7 +3,8 @@
 # slurmctld, slurmd on 127.0.0.1 with 2 CPUs, everything under the scratch directory)
 # runs runCases studies with 'scheduler slurm;':
 #  1. the study's results.dat is byte-identical to the same study run with 'scheduler local';
-#  2. a member made to fail is reported failed with its Slurm state (FAILED) and its logs, one
+#  2. a submission Slurm refuses is one error line; a member made to fail is reported failed
+#     with its Slurm state (FAILED) and its logs, one
 #     whose task is cancelled behind runCases' back with CANCELLED;
 #  3. a driver killed hard (SIGKILL) leaves its array in Slurm: the next runCases submits
 #     nothing, waits for the queued members and collects those that ended meanwhile; a
@@ -54,6 +55,13 @@ grep -q "^failed 0001 .*exited with 3 (Slurm state FAILED)" "$work/log.failing" 
 grep -q 'Slurm state FAILED' "$work/failing/members/0001/runCases.status" || fail "the status lacks the Slurm state"
 grep -q "fails on purpose" "$work/failing/members/0001/log.runCases" || fail "the member's log lacks its error"
 [ "$(column "$work/failing/results.dat" status | tr '\n' ' ')" = "done failed " ] || fail "wrong states in the table"
+noJobsLeft
+
+# A submission Slurm refuses (no such partition): one line with sbatch's reason, exit 1.
+makeStudy "$work/badPartition" "1" "1"
+printf 'scheduler slurm;\nslurm { partition nosuchpartition; }\n' >> "$work/badPartition/system/runCasesDict"
+expectUserError "invalid partition" runCases -case "$work/badPartition"
+[ "$(column "$work/badPartition/results.dat" status)" = "pending" ] || fail "the refused member is not pending"
 noJobsLeft
 
 # A task cancelled by someone else (as a time limit or a node failure would end it): the

@@ -235,11 +235,11 @@ private:
         if (c.status != 0 || array.empty() || array.find_first_not_of("0123456789") != std::string::npos) {
             std::string command;
             for (const std::string& a : argv) command += (command.empty() ? "" : " ") + a;
-            throw UserError("sbatch failed (exit " + std::to_string(c.status) + "): " + c.output +
-                            "\n  command: " + command +
-                            "\n  the members stay pending; check the slurm { } "
-                            "entries of " +
-                            study_.dictionary.string());
+            std::string said = c.output;
+            std::replace(said.begin(), said.end(), '\n', ' ');
+            throw UserError(
+                "sbatch failed (exit " + std::to_string(c.status) + "): " + said + " (command: " + command +
+                "); the members stay pending: check the slurm { } entries of " + study_.dictionary.string());
         }
         const auto now = Clock::now();
         for (const MemberDesign* member : members) {
