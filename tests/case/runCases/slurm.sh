@@ -4,8 +4,8 @@
 # runs runCases studies with 'scheduler slurm;':
 #  1. the study's results.dat is byte-identical to the same study run with 'scheduler local';
 #  2. a submission Slurm refuses is one error line; a member made to fail is reported failed
-#     with its Slurm state (FAILED) and its logs, one
-#     whose task is cancelled behind runCases' back with CANCELLED;
+#     with its Slurm state (FAILED) and its logs, one whose task is cancelled behind runCases'
+#     back with CANCELLED;
 #  3. a driver killed hard (SIGKILL) leaves its array in Slurm: the next runCases submits
 #     nothing, waits for the queued members and collects those that ended meanwhile; a
 #     SIGTERM cancels the array (scancel), exits 143 and squeue lists no job of the study;
