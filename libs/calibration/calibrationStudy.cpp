@@ -186,8 +186,8 @@ std::string describeValues(const CalibrationStudy& study, const std::vector<doub
 const std::vector<std::string>& calibrationDictEntries()
 {
     static const std::vector<std::string> entries = {
-        "model",      "method", "case",  "measurements",    "prepare", "command", "jobs",
-        "parameters", "tied",   "seeds", "responseSurface", "bobyqa",  "target"};
+        "model", "method",     "case", "measurements", "prepare",         "command", "jobs",  "scheduler",
+        "slurm", "parameters", "tied", "seeds",        "responseSurface", "bobyqa",  "target"};
     return entries;
 }
 
@@ -221,6 +221,7 @@ CalibrationStudy readCalibrationStudy(const fs::path& studyDirectory)
     s.prepareCommand = dict.getOrDefault<std::string>("prepare", "");
     s.command = dict.get<std::string>("command");
     s.jobs = static_cast<int>(dict.getScalarOrDefault("jobs", 1, Bounds::atLeast(1)));
+    s.scheduler = readScheduler(dict);
     for (const Entry& e : dict.subDict("parameters").entries())
         s.parameters.push_back(readParameter(e, s.targetCase));
     if (s.parameters.empty())

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/batchScheduler.hpp"
 #include "stats/measurements.hpp"
 
 namespace rockfrac::calibration {
@@ -47,6 +48,7 @@ struct CalibrationStudy {
     std::string prepareCommand;  // run once in the template ("" for none)
     std::string command;         // run in every member
     int jobs = 1;
+    SchedulerSettings scheduler;  // passed on to the runCases studies
     std::vector<CalibratedParameter> parameters;
     std::vector<TiedEntry> tied;
     std::optional<SeedList> seeds;
@@ -89,8 +91,9 @@ const std::vector<std::string>& calibrationDictEntries();
 // explainGap write such dictionaries).
 inline const std::vector<std::string>& runCasesDictEntries()
 {
-    static const std::vector<std::string> entries = {"template", "command", "jobs",    "parameters", "seeds",
-                                                     "results",  "design",  "samples", "seed"};
+    static const std::vector<std::string> entries = {"template", "command",    "jobs",  "scheduler",
+                                                     "slurm",    "parameters", "seeds", "results",
+                                                     "design",   "samples",    "seed"};
     return entries;
 }
 

@@ -107,7 +107,8 @@ std::string runCasesDictText(const CalibrationStudy& study, const RunSet& set)
       << "; do not edit (it is rewritten).\n"
       << "template   " << quoted(fs::proximate(study.templateDirectory(), set.directory).string()) << ";\n"
       << "command    " << quoted(study.command) << ";\n"
-      << "jobs       " << study.jobs << ";\n\nparameters\n{\n";
+      << "jobs       " << study.jobs << ";\n"
+      << schedulerText(study.scheduler) << "\nparameters\n{\n";
     for (std::size_t i = 0; i < study.parameters.size(); ++i) {
         const auto& p = study.parameters[i];
         d << "    " << p.name << " { file " << quoted(p.file.string()) << "; entry " << p.entry << "; unit "
@@ -176,6 +177,7 @@ fs::path runCasesExecutable()
 
 void prepareTemplate(const CalibrationStudy& study)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();  // before anything is written
     const fs::path dir = study.templateDirectory(), stamp = dir / ".prepared";
     if (fs::exists(stamp) && fs::last_write_time(stamp) >= newestInput(study.targetCase)) return;
     fs::remove_all(dir);
@@ -207,6 +209,7 @@ void prepareTemplate(const CalibrationStudy& study)
 
 std::vector<MemberRun> runSet(const CalibrationStudy& study, const RunSet& set, int jobs)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();
     fs::create_directories(set.directory / "system");
     const fs::path dictFile = set.directory / "system/runCasesDict";
     const std::string text = runCasesDictText(study, set);

@@ -64,8 +64,10 @@ calibration::SeedList readSeeds(const Dictionary& dict, const std::vector<fs::pa
     return seeds;
 }
 
-void readCommands(const Dictionary& dict, std::string& prepare, std::string& command, int& jobs)
+void readCommands(const Dictionary& dict, std::string& prepare, std::string& command, int& jobs,
+                  SchedulerSettings& scheduler)
 {
+    scheduler = readScheduler(dict);
     prepare = dict.getOrDefault<std::string>("prepare", "");
     command = dict.get<std::string>("command");
     jobs = static_cast<int>(dict.getScalarOrDefault("jobs", 1, Bounds::closed(1, 256)));
@@ -80,6 +82,7 @@ namespace {
 calibration::CalibrationStudy demRunStudy(const fs::path& directory, const fs::path& dictionary,
                                           const fs::path& targetCase, const std::string& prepare,
                                           const std::string& command, int jobs,
+                                          const SchedulerSettings& scheduler,
                                           const calibration::SeedList& seeds, const fs::path& response)
 {
     calibration::CalibrationStudy s;
@@ -90,6 +93,7 @@ calibration::CalibrationStudy demRunStudy(const fs::path& directory, const fs::p
     s.prepareCommand = prepare;
     s.command = command;
     s.jobs = jobs;
+    s.scheduler = scheduler;
     s.seeds = seeds;
     s.responseFile = response;
     s.forceColumn = "force";
@@ -103,7 +107,7 @@ calibration::CalibrationStudy ExplainStudy::runStudy(std::size_t condition) cons
     const TestCondition& c = conditions.at(condition);
     calibration::CalibrationStudy s =
         demRunStudy(c.name.empty() ? simulations : simulations / c.name, dictionary, c.targetCase,
-                    prepareCommand, command, jobs, seeds, responseFile);
+                    prepareCommand, command, jobs, scheduler, seeds, responseFile);
     for (const auto& b : baseline) s.parameters.push_back(b.where);
     for (const std::string& name : effects) {
         const EffectDescriptor& d = findEffect(name, dictionary.string());
@@ -129,6 +133,8 @@ const std::vector<std::string>& explainGapDictEntries()
                                                      "prepare",
                                                      "command",
                                                      "jobs",
+                                                     "scheduler",
+                                                     "slurm",
                                                      "simulations",
                                                      "seeds",
                                                      "baseline",
@@ -190,7 +196,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     } else {
         s.conditions.push_back(condition(dict, ""));
     }
-    readCommands(dict, s.prepareCommand, s.command, s.jobs);
+    readCommands(dict, s.prepareCommand, s.command, s.jobs, s.scheduler);
     s.simulations =
         dict.found("simulations") ? caseRelative(dict, studyDirectory, "simulations") : studyDirectory;
     std::vector<fs::path> cases;
@@ -296,13 +302,15 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 
 calibration::CalibrationStudy TwinStudy::runStudy() const
 {
-    return demRunStudy(directory, dictionary, targetCase, prepareCommand, command, jobs, seeds, responseFile);
+    return demRunStudy(directory, dictionary, targetCase, prepareCommand, command, jobs, scheduler, seeds,
+                       responseFile);
 }
 
 const std::vector<std::string>& twinDataDictEntries()
 {
-    static const std::vector<std::string> entries = {"case",    "prepare", "command", "jobs",     "seeds",
-                                                     "effects", "noise",   "output",  "material", "response"};
+    static const std::vector<std::string> entries = {"case",      "prepare", "command",  "jobs",
+                                                     "scheduler", "slurm",   "seeds",    "effects",
+                                                     "noise",     "output",  "material", "response"};
     return entries;
 }
 
@@ -318,7 +326,7 @@ TwinStudy readTwinStudy(const fs::path& studyDirectory)
     checkKnownEntries(dict, twinDataDictEntries());
     checkKnownSubEntries(dict, "noise", {"force", "displacement", "seed"});
     s.targetCase = existingCase(dict, studyDirectory);
-    readCommands(dict, s.prepareCommand, s.command, s.jobs);
+    readCommands(dict, s.prepareCommand, s.command, s.jobs, s.scheduler);
     s.seeds = readSeeds(dict, {s.targetCase}, 1, "one Voronoi seed per synthetic specimen");
     if (dict.isDict("effects")) {
         const Dictionary& effects = dict.subDict("effects");

@@ -39,6 +39,7 @@ struct ExplainStudy {
     std::filesystem::path simulations;
     std::string prepareCommand, command;
     int jobs = 1;
+    SchedulerSettings scheduler;  // where the runs go: local or Slurm
     calibration::SeedList seeds;  // the model's own scatter: every evaluation runs every seed
     std::vector<BaselineParameter> baseline;
     std::vector<calibration::TiedEntry> tied;
@@ -68,6 +69,7 @@ struct TwinStudy {
     std::filesystem::path directory, dictionary, targetCase;
     std::string prepareCommand, command;
     int jobs = 1;
+    SchedulerSettings scheduler;    // where the runs go: local or Slurm
     calibration::SeedList seeds;    // one specimen per seed
     std::string hiddenEffectsText;  // the body of constant/modelEffects ("" = none)
     std::vector<std::string> hiddenEffects;

@@ -545,3 +545,51 @@ $stlDict
 $facetFn
 { echo "solid inverted"; facet "0 0 0" "10 0 0" "0 10 0"; facet "0 0 0" "0 0 10" "10 0 0"; facet "0 0 0" "0 10 0" "0 0 10"; facet "10 0 0" "0 0 10" "0 10 0"; echo "endsolid inverted"; } > constant/triSurface/rock.stl
 SETUP
+
+# ---- scheduler entries of a study (issue 43) --------------------------------------------
+# A valid two-member study; each case appends a bad scheduler entry to its runCasesDict.
+studySetup='mkdir -p system template/system
+echo "x 0;" > template/system/params
+cat > system/runCasesDict <<D
+FoamFile { format ascii; class dictionary; object runCasesDict; }
+template "template"; command "true";
+parameters { x { file system/params; entry x; values (1 2); } }
+D'
+badCase schedulerUnknown empty "runCasesDict" "not a valid choice" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler pbs;' >> system/runCasesDict
+SETUP
+badCase slurmWithoutScheduler empty "runCasesDict" "the scheduler is local" runCases -case . <<SETUP
+$studySetup
+echo 'slurm { partition short; }' >> system/runCasesDict
+SETUP
+badCase slurmNotDictionary empty "runCasesDict" "must be a dictionary" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm short;' >> system/runCasesDict
+SETUP
+badCase slurmBadTime empty "runCasesDict" "not a Slurm time limit" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm { time 1:2:3:4; }' >> system/runCasesDict
+SETUP
+badCase slurmCpusZero empty "runCasesDict" "cpusPerTask" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm { cpusPerTask 0; }' >> system/runCasesDict
+SETUP
+badCase slurmCpusFraction empty "runCasesDict" "whole number" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm { cpusPerTask 1.5; }' >> system/runCasesDict
+SETUP
+badCase slurmExtraArray empty "runCasesDict" "which runCases sets itself" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm { extra "--qos=short --array=0-3"; }' >> system/runCasesDict
+SETUP
+badCase strictSlurmTypo empty "runCasesDict" "did you mean 'partition'?" runCases -case . -strict <<SETUP
+$studySetup
+echo 'scheduler slurm; slurm { partiton short; }' >> system/runCasesDict
+SETUP
+# Slurm's commands are looked for at run time only: without sbatch on PATH, one line says so
+# (before the study's lock file is made).
+badCase slurmNoSbatch empty "sbatch" "is not on PATH" env "PATH=$(dirname "$(command -v runCases)")" runCases -case . <<SETUP
+$studySetup
+echo 'scheduler slurm;' >> system/runCasesDict
+SETUP

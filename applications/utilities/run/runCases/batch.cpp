@@ -21,6 +21,7 @@
 #include "core/error.hpp"
 #include "core/subprocess.hpp"
 #include "members.hpp"
+#include "slurmBatch.hpp"
 
 namespace rockfrac::runcases {
 
@@ -128,6 +129,11 @@ private:
                 ++summary_.alreadyDone;
                 continue;
             }
+            if (status && status->state == "submitted")
+                std::cout << "warning: member " << member.id << " was submitted to Slurm as "
+                          << status->slurmJob
+                          << " by a runCases that did not finish; it runs here now (scancel "
+                          << status->slurmJob << " if squeue still lists it)" << std::endl;
             queue_.push_back(&member);
         }
         for (const MemberDesign* member : queue_) prepareMember(study_, *member);
@@ -247,8 +253,10 @@ private:
 
 BatchSummary runBatch(const Study& study, int jobs)
 {
+    if (study.scheduler.isSlurm()) requireSlurmCommands();  // before the lock file is made
     StudyLock lock(study);
     StopSignals signals;
+    if (study.scheduler.isSlurm()) return runSlurmBatch(study, stopSignal);
     return Batch(study, jobs).run();
 }
 

@@ -63,7 +63,8 @@ std::optional<MemberStatus> readStatus(const Study& study, const MemberDesign& m
     if (!fs::exists(file)) return std::nullopt;
     const Dictionary dict = Dictionary::readFile(file);
     MemberStatus status;
-    status.state = dict.getWord("state", {"pending", "running", "done", "failed"});
+    status.state = dict.getWord("state", {"pending", "running", "submitted", "done", "failed"});
+    status.slurmJob = dict.getOrDefault<std::string>("slurmJob", "");
     status.exitCode = dict.getOrDefault<int>("exitCode", -1);
     status.message = dict.getOrDefault<std::string>("message", "");
     if (dict.isDict("parameters"))
@@ -74,7 +75,7 @@ std::optional<MemberStatus> readStatus(const Study& study, const MemberDesign& m
 }
 
 void writeStatus(const Study& study, const MemberDesign& member, const std::string& state, int exitCode,
-                 const std::string& message)
+                 const std::string& message, const std::string& slurmJob)
 {
     writeFileAtomically(statusPath(study, member), [&](std::ostream& out) {
         out << "FoamFile { format ascii; class dictionary; object runCases.status; }\n"
@@ -82,6 +83,7 @@ void writeStatus(const Study& study, const MemberDesign& member, const std::stri
             << "state       " << state << ";\n"
             << "exitCode    " << exitCode << ";\n";
         if (!message.empty()) out << "message     " << quoted(message) << ";\n";
+        if (!slurmJob.empty()) out << "slurmJob    " << quoted(slurmJob) << ";\n";
         out << "parameters\n{\n";
         for (std::size_t j = 0; j < study.parameters.size(); ++j)
             out << "    " << study.parameters[j].name << " " << quoted(member.values[j]) << ";\n";

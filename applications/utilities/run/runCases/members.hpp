@@ -15,9 +15,11 @@
 namespace rockfrac::runcases {
 
 // pending: made, not run (or interrupted); running: started by a runCases that
-// may have died; done: the command succeeded and every result was read; failed.
+// may have died; submitted: in a Slurm job array (slurmJob "<array>_<index>");
+// done: the command succeeded and every result was read; failed.
 struct MemberStatus {
     std::string state = "pending";
+    std::string slurmJob;
     int exitCode = -1;
     std::string message;
     std::map<std::string, std::string> parameters;  // name -> value, as the member was made
@@ -26,7 +28,7 @@ struct MemberStatus {
 
 std::optional<MemberStatus> readStatus(const Study& study, const MemberDesign& member);
 void writeStatus(const Study& study, const MemberDesign& member, const std::string& state, int exitCode = -1,
-                 const std::string& message = "");
+                 const std::string& message = "", const std::string& slurmJob = "");
 
 // UserError when a done member was made with other values than the design now
 // gives: its results would be mislabelled.

@@ -205,6 +205,7 @@ Study readStudy(const fs::path& studyDirectory)
                         "' does not exist; give a case directory relative to the study");
     study.command = dict.get<std::string>("command");
     study.jobs = static_cast<int>(dict.getScalarOrDefault("jobs", 1, Bounds::atLeast(1)));
+    study.scheduler = readScheduler(dict);
     if (dict.found("parameters"))
         for (const Entry& entry : dict.subDict("parameters").entries())
             study.parameters.push_back(readParameter(entry, study.templateCase));

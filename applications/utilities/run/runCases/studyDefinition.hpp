@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/batchScheduler.hpp"
+
 namespace rockfrac::runcases {
 
 // One entry of a template file that the study varies.
@@ -48,6 +50,7 @@ struct Study {
     std::filesystem::path templateCase;
     std::string command;
     int jobs = 1;
+    SchedulerSettings scheduler;  // local, or the members as a Slurm job array
     std::vector<Parameter> parameters;
     std::string design;  // fullFactorial or latinHypercube
     std::size_t samples = 0;
