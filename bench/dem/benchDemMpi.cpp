@@ -5,8 +5,8 @@
 // Every rank builds the block (benchBlock.hpp), decomposes it as bondedDemFoam -parallel does
 // (rcb, cost weights, parallel/mpi/demExchange.hpp) and steps it with OMP_NUM_THREADS threads;
 // the wall time of `steps` steps is the best of 3, between barriers. Prints one line: cells,
-// ranks, threads per rank, cell-steps/s of the whole model, ghost cells, ghost bytes sent per
-// cell-step, and the share of the wall time the slowest and the mean rank spent in the
+// ranks, threads per rank, cell-steps/s of the whole model, ghost cells, bytes sent per cell-step (ghost
+// states and item results), and the share of the wall time the slowest and the mean rank spent in the
 // exchange's calls (messages, collectives and the waiting in them). Not a test.
 #include <mpi.h>
 #include <omp.h>
@@ -60,7 +60,7 @@ int main(int argc, char** argv)
     MPI_Allreduce(MPI_IN_PLACE, &slowest, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     MPI_Allreduce(MPI_IN_PLACE, &share_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     MPI_Allreduce(MPI_IN_PLACE, &share_sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-    long ghosts = exchange->ghostCells(), bytes = static_cast<long>(exchange->ghostBytesPerStep());
+    long ghosts = exchange->ghostCells(), bytes = static_cast<long>(exchange->bytesPerStep());
     MPI_Allreduce(MPI_IN_PLACE, &ghosts, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
     MPI_Allreduce(MPI_IN_PLACE, &bytes, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
     if (me == 0) {

@@ -147,8 +147,8 @@ struct BondKernelArgs {
     // (the second pass for interfaces whose first onset was pending).
     const int* only_interfaces = nullptr;
     int n_only = 0;
-    // A decomposed model (dem/demExchange.hpp): only interfaces with counted[k] add to the
-    // sums; null: every interface.
+    // A decomposed model (dem/demExchange.hpp): only interfaces with counted[k] are evaluated
+    // (the others are another rank's, their results sent here); null: every interface.
     const unsigned char* counted = nullptr;
 };
 
@@ -184,6 +184,7 @@ template <class Law>
 RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename Law::Coefficients& coefficients,
                                       int k, BondBlockSums& block)
 {
+    if (a.counted && !a.counted[k]) return true;  // another rank's (dem/demExchange.hpp)
     const int ci = a.cell_i[k], cj = a.cell_j[k];
     // The two cells' state as local copies: the history stores below go through
     // pointers the compiler cannot prove distinct from these arrays, so references would be
@@ -251,7 +252,7 @@ RF_HD inline bool bondInterfaceKernel(const BondKernelArgs& a, const typename La
         torque_i += cross(arm_i, out.force_on_i);
         torque_j -= cross(arm_j, out.force_on_i);
     }
-    if (!a.counted || a.counted[k]) block.add(sums);
+    block.add(sums);
     a.intact_bonds[k] = intact;
     a.force_on_i[k] = force;
     a.torque_on_i[k] = torque_i;

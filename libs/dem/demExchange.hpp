@@ -2,13 +2,14 @@
 // What a decomposed DemModel asks of the other ranks (the MPI side: parallel/mpi/demExchange.hpp).
 //
 // A decomposed run gives each rank a DemModel of its own cells and their ghosts (the cells of
-// other ranks within reach, in global id order), and every item among them is computed where
-// it is listed: an interface or contact pair with a ghost is computed on both sides from the
-// same state, so its force is the same bits on both and each rank's gather of its own cells
-// sums exactly what the serial model sums, in the same order. An item is counted (energies,
-// counters) only on the rank that owns its first cell. The model calls the exchange at its
-// synchronisation points: ghosts refreshed before each force evaluation, the list-rebuild and
-// step-split decisions taken over all ranks, the walls' reactions summed in the serial order.
+// other ranks within reach, in global id order). Every item (interface, contact pair, wall
+// item) is computed by exactly one rank, the one owning its first cell (a wall item: its cell),
+// and counted there (energies, counters); the rank owning the second cell receives the item's
+// results (forces, torques, stiffness, intact bonds) before its gather, so each rank's gather
+// of its own cells sums exactly what the serial model sums, in the same order. The model calls
+// the exchange at its synchronisation points: ghosts refreshed before each force evaluation,
+// item results returned, the list-rebuild and step-split decisions taken over all ranks, the
+// walls' reactions summed in the serial order.
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,13 @@ public:
     virtual int rank() const = 0;
     // The ghosts' position, velocity, orientation and angular velocity from their owners.
     virtual void refreshGhosts(CellArrays& cells) = 0;
+    // The results of the interfaces and contact pairs another rank computed (their first cell
+    // is a ghost here, their second one of this rank's), into this rank's arrays: after the
+    // bond kernel and after the contact kernels respectively.
+    virtual void returnInterfaceResults(InterfaceArrays& interfaces) = 0;
+    virtual void returnPairResults(ContactPairArrays& pairs) = 0;
+    // After each neighbour-list build: which pairs go where.
+    virtual void pairListsBuilt(const ContactPairArrays& pairs) = 0;
     // True on every rank when it is true on one.
     virtual bool anyRank(bool mine) = 0;
     // The largest of the ranks' values (exact whatever the order).

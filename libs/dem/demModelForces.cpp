@@ -129,6 +129,7 @@ void DemModel::runContactKernels(double dt)
     wa.triangle_vertices = triangle_vertices_.data();
     wa.triangle_features = triangle_features_.data();
     viewWallItemArrays(wa, wall_items_);
+    wa.owned_cell = owned_cell_.empty() ? nullptr : owned_cell_.data();
     parameters_.contact_law->runWalls(wa);
 
     energies_.contact_elastic = 0.0;
@@ -197,11 +198,15 @@ void DemModel::computeForces(double dt)
 {
     refreshKinematicCaches();
     runBondKernel(dt);
+    // Decomposed: the interfaces another rank computed (their first cell is its), before the
+    // lists are judged (a pair whose bonds are intact is left out).
+    if (exchange_) exchange_->returnInterfaceResults(interfaces_);
     // Moved too far, or an interface lost its first bond (its pair must enter the list).
     bool rebuild = neighbourListsStale() || counters_.interfaces_cracked != interfaces_cracked_at_build_;
     if (exchange_) rebuild = exchange_->anyRank(rebuild);  // every rank when one must: the serial moments
     if (rebuild) rebuildNeighbourLists();
     runContactKernels(dt);
+    if (exchange_) exchange_->returnPairResults(pairs_);
     gatherForces();
     forces_valid_ = true;
 }

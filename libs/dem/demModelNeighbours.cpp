@@ -93,6 +93,7 @@ void DemModel::rebuildNeighbourLists()
     if (exchange_) {
         exchange_->checkGhostReach(cells_);
         countPairs();
+        exchange_->pairListsBuilt(pairs_);
     }
     buildWallItems();
     position_at_build_ = cells_.position;

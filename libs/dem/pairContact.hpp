@@ -33,8 +33,8 @@ struct PairKernelArgs {
     Vec3* point_or_torque = nullptr;
     int block_size = 512;
     ContactBlockSums* block_sums = nullptr;  // one per block of block_size pairs (CPU runner)
-    // A decomposed model (dem/demExchange.hpp): only pairs with counted[p] add to the sums;
-    // null: every pair.
+    // A decomposed model (dem/demExchange.hpp): only pairs with counted[p] are evaluated (the
+    // others are another rank's, their results sent here); null: every pair.
     const unsigned char* counted = nullptr;
 };
 
@@ -179,6 +179,7 @@ RF_HD inline int pairPatch(const CellContactView& cells, int ca, int cb, const C
 template <class Law>
 RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& sums)
 {
+    if (a.counted && !a.counted[p]) return;  // another rank's (dem/demExchange.hpp)
     const int ca = a.cell_a[p], cb = a.cell_b[p];
     a.force_on_b[p] = a.point_or_torque[p] = Vec3{};
     const CellContactView& cells = a.cells;
@@ -260,7 +261,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
         out.friction_dissipation = patch.friction_dissipation;
         out.stiffness = patch.stiffness;
         storeItem(a.items, p, out, status);
-        if (!a.counted || a.counted[p]) sums.add(out, status);
+        sums.add(out, status);
         a.force_on_b[p] = patch.force;
         a.point_or_torque[p] = patch.torque;
         return;
@@ -278,7 +279,7 @@ RF_HD inline void pairKernel(const PairKernelArgs& a, int p, ContactBlockSums& s
     in.dt = a.dt;
     const ContactOutput out = Law::evaluate(a.constants, in, a.items.tangential_spring[p]);
     storeItem(a.items, p, out, status);
-    if (!a.counted || a.counted[p]) sums.add(out, status);
+    sums.add(out, status);
     a.force_on_b[p] = out.force_on_b;
     a.point_or_torque[p] = a.patch ? cross(g.point - cells.position[cb], out.force_on_b) : g.point;
 }

@@ -37,6 +37,9 @@ struct WallKernelArgs {
     Vec3* force_on_cell = nullptr;
     Vec3* torque_on_cell = nullptr;
     double* wall_power = nullptr;  // force on the cell . wall velocity at the contact [W]
+    // A decomposed model (dem/demExchange.hpp): only the items of cells with owned_cell[c]
+    // are evaluated (a ghost's are its owner's); null: every item.
+    const unsigned char* owned_cell = nullptr;
 };
 
 RF_HD inline Vec3 wallPointVelocity(const WallPose& wall, const Vec3& point)
@@ -339,6 +342,7 @@ template <class Law>
 RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
 {
     const int c = a.item_cell[item];
+    if (a.owned_cell && !a.owned_cell[c]) return;
     const WallPose& wall = a.walls[a.item_wall[item]];
     a.force_on_cell[item] = a.torque_on_cell[item] = Vec3{};
     a.wall_power[item] = 0.0;

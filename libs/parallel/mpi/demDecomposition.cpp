@@ -105,6 +105,7 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
     auto exchange =
         std::make_unique<MpiDemExchange>(comm, std::move(global_cell), std::move(global_interface), owned,
                                          std::move(neighbours), std::move(start), allowance);
+    exchange->interfacesDecomposed(model.interfaces());
     model.decompose(exchange.get(), owned, energies, counters, rates);
     return exchange;
 }
@@ -112,7 +113,7 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
 std::string describeDecomposition(const MpiDemExchange& exchange, const DecomposeParameters& parameters,
                                   MPI_Comm comm)
 {
-    long sums[2] = {exchange.ghostCells(), static_cast<long>(exchange.ghostBytesPerStep())};
+    long sums[2] = {exchange.ghostCells(), static_cast<long>(exchange.bytesPerStep())};
     int most[3] = {exchange.ownedCells(), exchange.ghostCells(), exchange.neighbourRanks()};
     int least = exchange.ownedCells();
     MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_LONG, MPI_SUM, comm);
@@ -122,7 +123,8 @@ std::string describeDecomposition(const MpiDemExchange& exchange, const Decompos
     std::snprintf(
         line, sizeof(line),
         "Decomposition: %d ranks (%s, %s weights): %d-%d cells per rank; %ld ghost cells in all (at most "
-        "%d on a rank, at most %d neighbour ranks); %.4g kB of ghost state sent per step in all; cells may "
+        "%d on a rank, at most %d neighbour ranks); %.4g kB of ghost states and item results sent per step "
+        "in all; cells may "
         "move %.4g mm before the ghost layer must be rebuilt",
         size(comm), parameters.method->type(), parameters.cost_weights ? "cost" : "uniform", least, most[0],
         sums[0], most[1], most[2], 1e-3 * static_cast<double>(sums[1]), 1e3 * exchange.allowance());

@@ -45,10 +45,14 @@ void unpackCell(const double* in, CellArrays& c, int i)
 
 class MpiDemExchange::Timed {
 public:
-    explicit Timed(MpiDemExchange& e) : e_(e), start_(std::chrono::steady_clock::now()) { ++e_.exchange_calls_; }
+    explicit Timed(MpiDemExchange& e) : e_(e), start_(std::chrono::steady_clock::now())
+    {
+        ++e_.exchange_calls_;
+    }
     ~Timed()
     {
-        e_.exchange_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        e_.exchange_seconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }
 
 private:
@@ -72,6 +76,132 @@ MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_c
     size_ = mpi::size(comm);
     send_buffer_.resize(neighbours_.size());
     recv_buffer_.resize(neighbours_.size());
+    owner_.assign(owned_.size(), rank_);
+    for (const Neighbour& nb : neighbours_)
+        for (int c : nb.recv) owner_[c] = nb.rank;
+}
+
+template <class CellOf>
+void MpiDemExchange::sortItems(int n, CellOf&& first_and_second, std::vector<std::vector<int>>& send,
+                               std::vector<std::vector<int>>& recv) const
+{
+    send.assign(neighbours_.size(), {});
+    recv.assign(neighbours_.size(), {});
+    std::vector<int> slot(size_, -1);
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) slot[neighbours_[k].rank] = static_cast<int>(k);
+    for (int i = 0; i < n; ++i) {
+        const auto [first, second] = first_and_second(i);
+        const int a = owner_[first], b = owner_[second];
+        if (a == rank_ && b != rank_) send[slot[b]].push_back(i);
+        if (a != rank_ && b == rank_) recv[slot[a]].push_back(i);
+    }
+}
+
+void MpiDemExchange::interfacesDecomposed(const InterfaceArrays& f)
+{
+    sortItems(
+        f.size(),
+        [&](int k) {
+            return std::pair{f.cell_i[k], f.cell_j[k]};
+        },
+        interface_send_, interface_recv_);
+}
+
+void MpiDemExchange::pairListsBuilt(const ContactPairArrays& p)
+{
+    sortItems(
+        p.size(),
+        [&](int i) {
+            return std::pair{p.cell_a[i], p.cell_b[i]};
+        },
+        pair_send_, pair_recv_);
+}
+
+template <class Pack, class Unpack>
+void MpiDemExchange::exchangeItems(const std::vector<std::vector<int>>& send,
+                                   const std::vector<std::vector<int>>& recv, int per_item, int tag,
+                                   Pack&& pack, Unpack&& unpack)
+{
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * neighbours_.size());
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        auto& in = recv_buffer_[k];
+        in.resize(recv[k].size() * per_item);
+        if (in.empty()) continue;
+        requests.emplace_back();
+        check(MPI_Irecv(in.data(), static_cast<int>(in.size()), MPI_DOUBLE, neighbours_[k].rank, tag, comm_,
+                        &requests.back()),
+              "MPI_Irecv (items)");
+    }
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        auto& out = send_buffer_[k];
+        out.resize(send[k].size() * per_item);
+        if (out.empty()) continue;
+        for (std::size_t i = 0; i < send[k].size(); ++i) pack(send[k][i], out.data() + i * per_item);
+        requests.emplace_back();
+        check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, neighbours_[k].rank, tag, comm_,
+                        &requests.back()),
+              "MPI_Isend (items)");
+    }
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall (items)");
+    for (std::size_t k = 0; k < neighbours_.size(); ++k)
+        for (std::size_t i = 0; i < recv[k].size(); ++i)
+            unpack(recv[k][i], recv_buffer_[k].data() + i * per_item);
+}
+
+namespace {
+
+void putVec(double* out, const Vec3& v)
+{
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+Vec3 getVec(const double* in)
+{
+    return {in[0], in[1], in[2]};
+}
+
+}  // namespace
+
+// Per interface: the force on cell i, the torques on i and j, the intact bonds.
+void MpiDemExchange::returnInterfaceResults(InterfaceArrays& f)
+{
+    const Timed timed(*this);
+    exchangeItems(
+        interface_send_, interface_recv_, 10, ghost_tag + 1,
+        [&](int k, double* out) {
+            putVec(out, f.force_on_i[k]);
+            putVec(out + 3, f.torque_on_i[k]);
+            putVec(out + 6, f.torque_on_j[k]);
+            out[9] = f.intact_bonds[k];
+        },
+        [&](int k, const double* in) {
+            f.force_on_i[k] = getVec(in);
+            f.torque_on_i[k] = getVec(in + 3);
+            f.torque_on_j[k] = getVec(in + 6);
+            f.intact_bonds[k] = static_cast<int>(in[9]);
+        });
+}
+
+// Per pair: the force on b, the contact point or torque on b, the normal stiffness.
+void MpiDemExchange::returnPairResults(ContactPairArrays& p)
+{
+    const Timed timed(*this);
+    exchangeItems(
+        pair_send_, pair_recv_, 7, ghost_tag + 2,
+        [&](int i, double* out) {
+            putVec(out, p.force_on_b[i]);
+            putVec(out + 3, p.point_or_torque[i]);
+            out[6] = p.stiffness[i];
+        },
+        [&](int i, const double* in) {
+            p.force_on_b[i] = getVec(in);
+            p.point_or_torque[i] = getVec(in + 3);
+            p.stiffness[i] = static_cast<float>(in[6]);
+        });
 }
 
 void MpiDemExchange::refreshGhosts(CellArrays& cells)
@@ -177,11 +307,15 @@ int MpiDemExchange::ownedCells() const
     return static_cast<int>(std::count(owned_.begin(), owned_.end(), 1));
 }
 
-std::uint64_t MpiDemExchange::ghostBytesPerStep() const
+std::uint64_t MpiDemExchange::bytesPerStep() const
 {
-    std::uint64_t cells = 0;
-    for (const Neighbour& n : neighbours_) cells += n.send.size();
-    return cells * doubles_per_cell * sizeof(double);
+    std::uint64_t doubles = 0;
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        doubles += neighbours_[k].send.size() * doubles_per_cell;
+        if (k < interface_send_.size()) doubles += interface_send_[k].size() * 10;
+        if (k < pair_send_.size()) doubles += pair_send_[k].size() * 7;
+    }
+    return doubles * sizeof(double);
 }
 
 }  // namespace rockfrac::mpi

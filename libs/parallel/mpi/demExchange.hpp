@@ -8,8 +8,9 @@
 // allowance (the distance any cell may move from where it was at the decomposition before
 // the ghost layer no longer holds every cell within contact reach; checked at every list
 // build). Before each force evaluation each owner sends its neighbours the state of the
-// cells they hold as ghosts (13 doubles per cell), so every item is computed from the same
-// bits on every rank that lists it.
+// cells they hold as ghosts (13 doubles per cell); an interface or contact pair across two
+// ranks is computed on the rank of its first cell, which sends its results (10 doubles per
+// interface, 7 per pair) to the rank of the second.
 //
 //     std::unique_ptr<MpiDemExchange> exchange = decomposeDemModel(model, parameters, comm);
 //     // model now holds this rank's cells and ghosts; step it as before
@@ -44,6 +45,11 @@ public:
     void sumOverRanks(std::vector<double>& values) override;
     std::vector<WallItemTerm> mergeWallTerms(const std::vector<WallItemTerm>& mine) override;
     void checkGhostReach(const CellArrays& cells) override;
+    void returnInterfaceResults(InterfaceArrays& interfaces) override;
+    void returnPairResults(ContactPairArrays& pairs) override;
+    void pairListsBuilt(const ContactPairArrays& pairs) override;
+    // Which interfaces go where (they do not change during a run): once, after the cut.
+    void interfacesDecomposed(const InterfaceArrays& interfaces);
     std::int64_t globalCell(int c) const override { return global_cell_[c]; }
     int globalInterface(int k) const { return global_interface_[k]; }
     bool owns(int c) const { return owned_[c] != 0; }
@@ -53,7 +59,8 @@ public:
     int ownedCells() const;
     int ghostCells() const { return static_cast<int>(global_cell_.size()) - ownedCells(); }
     int neighbourRanks() const { return static_cast<int>(neighbours_.size()); }
-    std::uint64_t ghostBytesPerStep() const;  // sent by this rank per force evaluation
+    std::uint64_t bytesPerStep()
+        const;  // ghost states and item results sent per force evaluation (current lists)
     double allowance() const { return allowance_; }
     // Wall-clock seconds this rank spent in the exchange's calls (messages, collectives and the
     // waiting for slower ranks in them), and how many calls, since the start.
@@ -70,6 +77,19 @@ private:
     std::vector<Vec3> start_position_;
     double allowance_ = 0.0;
     std::vector<std::vector<double>> send_buffer_, recv_buffer_;
+    std::vector<int> owner_;  // per local cell: the rank owning it
+    // Per neighbour (as neighbours_): the items whose results go there (first cell mine, second
+    // its) and come from there (first cell its, second mine), local indices in global order.
+    std::vector<std::vector<int>> interface_send_, interface_recv_, pair_send_, pair_recv_;
+    // Items by the pair of owners of their two cells, into per-neighbour lists.
+    template <class CellOf>
+    void sortItems(int n, CellOf&& first_and_second, std::vector<std::vector<int>>& send,
+                   std::vector<std::vector<int>>& recv) const;
+    // Send each neighbour its items' values (per_item doubles packed by pack(i, out)) and unpack
+    // what comes back (unpack(i, in)).
+    template <class Pack, class Unpack>
+    void exchangeItems(const std::vector<std::vector<int>>& send, const std::vector<std::vector<int>>& recv,
+                       int per_item, int tag, Pack&& pack, Unpack&& unpack);
     double exchange_seconds_ = 0.0;
     long exchange_calls_ = 0;
     class Timed;  // adds a call's wall time to exchange_seconds_
