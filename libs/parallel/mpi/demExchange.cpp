@@ -77,8 +77,11 @@ MpiDemExchange::MpiDemExchange(MPI_Comm comm, std::vector<std::int64_t> global_c
     send_buffer_.resize(neighbours_.size());
     recv_buffer_.resize(neighbours_.size());
     owner_.assign(owned_.size(), rank_);
-    for (const Neighbour& nb : neighbours_)
+    for (const Neighbour& nb : neighbours_) {
         for (int c : nb.recv) owner_[c] = nb.rank;
+        ghost_send_.push_back(nb.send);
+        ghost_recv_.push_back(nb.recv);
+    }
 }
 
 template <class CellOf>
@@ -207,36 +210,10 @@ void MpiDemExchange::returnPairResults(ContactPairArrays& p)
 void MpiDemExchange::refreshGhosts(CellArrays& cells)
 {
     const Timed timed(*this);
-    std::vector<MPI_Request> requests;
-    requests.reserve(2 * neighbours_.size());
-    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-        auto& in = recv_buffer_[k];
-        in.resize(neighbours_[k].recv.size() * doubles_per_cell);
-        if (in.empty()) continue;
-        requests.emplace_back();
-        check(MPI_Irecv(in.data(), static_cast<int>(in.size()), MPI_DOUBLE, neighbours_[k].rank, ghost_tag,
-                        comm_, &requests.back()),
-              "MPI_Irecv (ghosts)");
-    }
-    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-        auto& out = send_buffer_[k];
-        const std::vector<int>& send = neighbours_[k].send;
-        out.resize(send.size() * doubles_per_cell);
-        if (out.empty()) continue;
-        for (std::size_t i = 0; i < send.size(); ++i)
-            packCell(cells, send[i], out.data() + i * doubles_per_cell);
-        requests.emplace_back();
-        check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, neighbours_[k].rank, ghost_tag,
-                        comm_, &requests.back()),
-              "MPI_Isend (ghosts)");
-    }
-    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
-          "MPI_Waitall (ghosts)");
-    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-        const std::vector<int>& recv = neighbours_[k].recv;
-        for (std::size_t i = 0; i < recv.size(); ++i)
-            unpackCell(recv_buffer_[k].data() + i * doubles_per_cell, cells, recv[i]);
-    }
+    exchangeItems(
+        ghost_send_, ghost_recv_, doubles_per_cell, ghost_tag,
+        [&](int c, double* out) { packCell(cells, c, out); },
+        [&](int c, const double* in) { unpackCell(in, cells, c); });
 }
 
 bool MpiDemExchange::anyRank(bool mine)

@@ -80,6 +80,7 @@ private:
     std::vector<int> owner_;  // per local cell: the rank owning it
     // Per neighbour (as neighbours_): the items whose results go there (first cell mine, second
     // its) and come from there (first cell its, second mine), local indices in global order.
+    std::vector<std::vector<int>> ghost_send_, ghost_recv_;  // cells, as Neighbour's lists
     std::vector<std::vector<int>> interface_send_, interface_recv_, pair_send_, pair_recv_;
     // Items by the pair of owners of their two cells, into per-neighbour lists.
     template <class CellOf>
