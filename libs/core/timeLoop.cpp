@@ -63,7 +63,7 @@ int TimeLoop::run(TimedRun& run)
         const bool sampleDue = step_ % sampling.interval == 0;
         if (sampleDue) run.sample();
         const std::string stop = run.stopReason();
-        if (interrupted()) {
+        if (run.interruptedEverywhere(interrupted())) {
             reason = run.canRestart()
                          ? "interrupted by a signal: state written, continue with startFrom latestTime"
                          : "interrupted by a signal: output written (this run cannot restart)";
@@ -149,7 +149,8 @@ bool interrupted()
 
 int interruptExitCode()
 {
-    return 128 + receivedSignal.load();
+    const int signal = receivedSignal.load();
+    return 128 + (signal != 0 ? signal : SIGTERM);
 }
 
 }  // namespace rockfrac

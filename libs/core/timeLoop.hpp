@@ -90,6 +90,9 @@ public:
     virtual void writeTime(long step) = 0;
     // The failing state for inspection; returns where it went (empty: nothing written).
     virtual std::string writeFailure(long step) = 0;
+    // Whether to stop for a signal: `here`, whether one reached this process. A run over
+    // several processes (MPI) answers for all of them, so that they stop at the same step.
+    virtual bool interruptedEverywhere(bool here) { return here; }
     // Simulated time [s] and the run's part of a progress line.
     virtual double time() const = 0;
     virtual std::string progress() const { return {}; }
@@ -146,7 +149,8 @@ long readSampleInterval(const Dictionary& controlDict, const std::string& functi
 
 // SIGINT / SIGTERM: installInterruptHandlers() (which forgets an earlier signal) at the
 // start of a loop; the loop checks interrupted() every step, writes the state at the
-// current step and exits with interruptExitCode() (130 / 143).
+// current step and exits with interruptExitCode() (130 / 143; 143 in a process that stops
+// because another one of its run was signalled).
 void installInterruptHandlers();
 bool interrupted();
 int interruptExitCode();

@@ -161,6 +161,9 @@ public:
         return "VTK/cells_" + std::to_string(step) + ".vtu";
     }
 
+    // The ranks of a decomposed run stop together, at the first step a signal reached one.
+    bool interruptedEverywhere(bool here) override { return decomposer ? decomposer->anyRank(here) : here; }
+
     double time() const override { return model->time(); }
 
     std::string progress() const override

@@ -27,6 +27,8 @@ public:
     virtual ~DemDecomposer() = default;
     virtual void decompose(DemModel& model) = 0;  // collective
     virtual bool writes() const = 0;
+    // Collective: true on every rank when `mine` is true on one.
+    virtual bool anyRank(bool mine) = 0;
     // Collective: the whole model's state on the writing rank (null on the others).
     virtual const DemModel* gather(const DemModel& local) = 0;
     virtual std::string describe() const = 0;  // the log's line, after decompose

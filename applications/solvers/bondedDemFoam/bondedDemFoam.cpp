@@ -78,6 +78,7 @@ public:
         return whole_.get();
     }
     bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
+    bool anyRank(bool mine) override { return exchange_->anyRank(mine); }
     std::string describe() const override
     {
         return mpi::describeDecomposition(*exchange_, parameters_, MPI_COMM_WORLD);

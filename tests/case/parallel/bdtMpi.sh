@@ -8,29 +8,30 @@
 # equals the serial run's, and every <time>/demState too but for its energies, force rates and
 # initial balance (within 1e-12 relative). A run written with 4 ranks, continued with 2 and then
 # serially, gives the same again; so does a run whose rank 1 is killed (SIGKILL), restarted
-# from its latest time directory. The full size runs to the split (the stop criterion: bonds
-# breaking, contacts, 379 list rebuilds); the small size (the sanitized pass) to 3e-4 s. Bad
-# input: numberOfSubdomains other than -np, and a crusher case under -parallel, each exit 1
-# with one message naming the file.
+# from its latest time directory, and a run stopped by SIGTERM to mpirun (every rank stops at
+# the same step and the state is written there), continued. The full size runs to the split
+# (the stop criterion: bonds breaking, contacts, 379 list rebuilds); the small size (the
+# sanitized pass) to 1.5e-4 s with 2 and 4 ranks only, without the signal. Bad input: numberOfSubdomains other than -np, and a crusher case
+# under -parallel, each exit 1 with one message naming the file.
 source "$(dirname "$0")/../caseTestFunctions"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-export OMPI_MCA_mca_base_component_disable_dlclose=1
-[ -n "${LSAN_OPTIONS:-}" ] && export LSAN_OPTIONS="$LSAN_OPTIONS:fast_unwind_on_malloc=0"
-command -v mpirun > /dev/null || fail "mpirun not found: utilities/installDependencies installs openmpi-bin"
+source "$(dirname "$0")/mpiTestFunctions"
 
 copyTutorial tutorials/BDT/granite "$work/base"
 cd "$work/base"
 run() { "$@" > "log.$1" 2>&1 || fail "$1 failed: $(tail -3 "log.$1")"; }
 run meshRock
 run voronoiMesh
-[ "$(bySize full small)" = small ] && caseDict -case . system/controlDict -entry endTime -set 3e-4 > /dev/null
+if [ "$(bySize full small)" = small ]; then
+    caseDict -case . system/controlDict -entry endTime -set 1.5e-4 > /dev/null
+    caseDict -case . system/controlDict -entry writeInterval -set 5e-5 > /dev/null
+fi
 cat > system/decomposeParDict <<'DICT'
 FoamFile { format ascii; class dictionary; object decomposeParDict; }
 numberOfSubdomains  2;
 method              rcb;
 weights             cost;
 DICT
-dat=postProcessing/plateForce/0/plateForce.dat
+dat=$mpiDat
 
 cp -r "$work/base" "$work/serial"
 (cd "$work/serial" && bondedDemFoam > log 2>&1) || fail "serial run failed: $(tail -3 "$work/serial/log")"
@@ -39,19 +40,8 @@ rows=$(grep -vc '^#' "$work/serial/$dat")
 # same <dir>: plateForce.dat as described above, the VTK frames byte for byte, the state files
 # but for the energies.
 same() {
-    [ "$(wc -l < "$1/$dat")" = "$(wc -l < "$work/serial/$dat")" ] || fail "$1: $(wc -l < "$1/$dat") lines, serial $(wc -l < "$work/serial/$dat")"
-    diff <(cut -f1-10,12 "$work/serial/$dat") <(cut -f1-10,12 "$1/$dat") > /dev/null ||
-        fail "$1: plateForce.dat differs from the serial run: $(diff <(cut -f1-10,12 "$work/serial/$dat") <(cut -f1-10,12 "$1/$dat") | head -3)"
-    paste <(grep -v '^#' "$work/serial/$dat") <(grep -v '^#' "$1/$dat") | awk -F'\t' -v run="$1" '
-        { d = $11 - $23; if (d < 0) d = -d; if (d > worst) worst = d; if (d > 1e-11 * $10 + 1e-18) bad++ }
-        END { printf "%s: balanceError at most %.3g J from the serial run'"'"'s\n", run, worst; exit bad > 0 }' ||
-        fail "$1: balanceError beyond 1e-11 of the external work"
-    local frames=0 f
-    for f in $(cd "$work/serial" && find VTK -type f | sort); do
-        cmp -s "$work/serial/$f" "$1/$f" || fail "$1: $f differs from the serial run's"
-        frames=$((frames + 1))
-    done
-    [ "$frames" -gt 4 ] || fail "$1: only $frames VTK files"
+    samePlateForce "$work/serial" "$1"
+    sameFrames "$work/serial" "$1"
     local t
     for t in $(cd "$work/serial" && ls -d [0-9]*); do
         [ -f "$1/$t/demState" ] || fail "$1: no $t/demState"
@@ -60,7 +50,7 @@ same() {
     done
 }
 
-for np in 1 2 4; do
+for np in $(bySize "1 2 4" "2 4"); do
     cp -r "$work/base" "$work/np$np"
     caseDict -case "$work/np$np" system/decomposeParDict -entry numberOfSubdomains -set "$np" > /dev/null
     (cd "$work/np$np" && mpirun --oversubscribe -np "$np" bondedDemFoam -parallel > log 2>&1) ||
@@ -69,17 +59,19 @@ for np in 1 2 4; do
     grep -q "^Parallel: rank 0 gathers the state" "$work/np$np/log" || fail "np$np: the log does not say how -parallel writes"
     same "$work/np$np"
 done
-cp -r "$work/base" "$work/hybrid"
-(cd "$work/hybrid" && OMP_NUM_THREADS=2 mpirun --oversubscribe -x OMP_NUM_THREADS -np 2 bondedDemFoam -parallel > log 2>&1) ||
-    fail "2 ranks x 2 threads failed: $(tail -5 "$work/hybrid/log")"
-same "$work/hybrid"
-echo "$rows rows identical for 1, 2 and 4 ranks and 2 ranks x 2 threads"
+if [ "$(bySize full small)" = full ]; then
+    cp -r "$work/base" "$work/hybrid"
+    (cd "$work/hybrid" && OMP_NUM_THREADS=2 mpirun --oversubscribe -x OMP_NUM_THREADS -np 2 bondedDemFoam -parallel > log 2>&1) ||
+        fail "2 ranks x 2 threads failed: $(tail -5 "$work/hybrid/log")"
+    same "$work/hybrid"
+fi
+echo "$rows rows identical for $(bySize "1, 2 and 4 ranks and 2 ranks x 2 threads" "2 and 4 ranks")"
 
 # Restart with other numbers of ranks: 4 ranks to a write time, 2 ranks to a later one (a run
 # ending between write times adds a row there), then serially to the end.
 cp -r "$work/base" "$work/restart"
 cd "$work/restart"
-for leg in "4 $(bySize 3e-4 1e-4)" "2 $(bySize 6e-4 2e-4)" "1 $(caseDict -case . system/controlDict -entry endTime -value)"; do
+for leg in "4 $(bySize 3e-4 5e-5)" "2 $(bySize 6e-4 1e-4)" "1 $(caseDict -case . system/controlDict -entry endTime -value)"; do
     set -- $leg
     caseDict -case . system/controlDict -entry endTime -set "$2" > /dev/null
     caseDict -case . system/decomposeParDict -entry numberOfSubdomains -set "$1" > /dev/null
@@ -110,6 +102,25 @@ mpirun --oversubscribe -np 2 bondedDemFoam -parallel > log.restart 2>&1 || fail 
 caseDict -case . system/controlDict -entry writeInterval -set "$(caseDict -case "$work/serial" system/controlDict -entry writeInterval -value)" > /dev/null
 cut -f1-10,12 "$dat" | diff - <(cut -f1-10,12 "$work/serial/$dat") > /dev/null || fail "the run restarted after the kill differs from the serial run"
 echo "restart 4 -> 2 -> 1 ranks and after a killed rank: the serial run's results"
+
+# SIGTERM to mpirun (what Ctrl-C or a batch system's time limit does): every rank stops at the
+# same step and the state is written there; the continued run ends as the serial run.
+# Full size only: the small run ends within a second or two, before mpirun forwards a signal.
+if [ "$(bySize full small)" = full ]; then
+    cp -r "$work/base" "$work/signal"
+    cd "$work/signal"
+    mpirun --oversubscribe -np 2 bondedDemFoam -parallel > log.signal 2>&1 &
+    runner=$!
+    for i in $(seq 1 400); do [ "$(ls -d [0-9]* 2> /dev/null | wc -l)" -ge 2 ] && break; sleep 0.02; done
+    kill -TERM "$runner"
+    code=0
+    wait "$runner" || code=$?
+    [ "$code" != 0 ] || fail "the signalled run exited 0"
+    grep -q "interrupted by a signal: state written" log.signal || fail "the signalled run did not write its state: $(tail -5 log.signal)"
+    mpirun --oversubscribe -np 2 bondedDemFoam -parallel > log.continued 2>&1 || fail "the continuation after the signal failed: $(tail -5 log.continued)"
+    cut -f1-10,12 "$dat" | diff - <(cut -f1-10,12 "$work/serial/$dat") > /dev/null || fail "the run continued after the signal differs from the serial run"
+    echo "SIGTERM: the state written at one step by every rank, the continued run the serial run's"
+fi
 
 # Bad input: exit 1 within 30 s with one message naming the file.
 # refused <case> <ranks> <message>
