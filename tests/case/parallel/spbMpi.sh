@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # bondedDemFoam -parallel on SPB granite rock 7 (198 cells, a scanned-like hull between plates):
-# 2 and 3 ranks (3 on 2 cores: --oversubscribe; a part count that is no power of two) give the
-# serial run's plateForce.dat in every column but balanceError (within 1e-11 of the external
+# 2 ranks give the serial run's plateForce.dat in every column but balanceError (within 1e-11 of the external
 # work) and its VTK frames byte for byte, to 25 % of the run (the rock loaded through its
-# bonds; at the small size, 2 ranks to 15 %, the plates in contact).
+# bonds; 15 % at the small size, the plates in contact). Not 3 ranks: oversubscribed ranks
+# poll in their waits, and beside another test on 2 cores the run took minutes.
 source "$(dirname "$0")/../caseTestFunctions"
 source "$(dirname "$0")/mpiTestFunctions"
 
@@ -20,7 +20,7 @@ printf 'FoamFile { format ascii; class dictionary; object decomposeParDict; }\nn
 dat=$mpiDat
 cp -r . "$work/serial"
 (cd "$work/serial" && bondedDemFoam > log 2>&1) || fail "serial run failed: $(tail -3 "$work/serial/log")"
-for np in $(bySize "2 3" 2); do
+for np in 2; do
     cp -r . "$work/np$np"
     caseDict -case "$work/np$np" system/decomposeParDict -entry numberOfSubdomains -set "$np" > /dev/null
     (cd "$work/np$np" && mpirun --oversubscribe -np "$np" bondedDemFoam -parallel > log 2>&1) ||
@@ -28,4 +28,4 @@ for np in $(bySize "2 3" 2); do
     samePlateForce "$work/serial" "$work/np$np"
     sameFrames "$work/serial" "$work/np$np"
 done
-awk -F'\t' -v ranks="$(bySize "2 and 3" 2)" '!/^#/ { f = $3 } END { printf "SPB rock 7: %d rows and the VTK frames of %s ranks equal the serial run'"'"'s (force %.1f N at the end)\n", NR, ranks, f }' "$work/serial/$dat"
+awk -F'\t' -v ranks=2 '!/^#/ { f = $3 } END { printf "SPB rock 7: %d rows and the VTK frames of %s ranks equal the serial run'"'"'s (force %.1f N at the end)\n", NR, ranks, f }' "$work/serial/$dat"
