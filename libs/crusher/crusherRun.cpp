@@ -12,6 +12,7 @@
 #include "crusher/machineLoading.hpp"
 #include "demCase/demBackend.hpp"
 #include "demCase/demCase.hpp"
+#include "demCase/demRun.hpp"
 #include "demCuda/cudaDemModel.hpp"
 #include "geometry/triSurface.hpp"
 #include "io/timeSeries.hpp"
@@ -114,7 +115,7 @@ std::string checkFeedMemory(const fs::path& loadingFile, const FeedSpec& feed, d
 // any step); TimeLoop drives it.
 class CrusherRun final : public TimedRun {
 public:
-    CrusherRun(const Application& a, TimeLoop& loop);
+    CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* decomposer);
     void printSetup() const override;
     // Cells are inserted and removed: no state file to continue from.
     bool canRestart() const override { return false; }
@@ -123,7 +124,13 @@ public:
     void beforeStep(long step) override;
     StepResult advance(double deltaT) override;
     void afterStep(long step) override;
-    void sample() override { machineSeries->append(machineRow()); }
+    void sample() override
+    {
+        std::vector<double> row = machineRow();
+        if (writes()) machineSeries->append(row);
+    }
+    // The ranks of a decomposed run stop together, at the first step a signal reached one.
+    bool interruptedEverywhere(bool here) override { return decomposer ? decomposer->anyRank(here) : here; }
     void writeTime(long step) override { writeVtk(step); }
     std::string writeFailure(long step) override;
     double time() const override { return model->time(); }
@@ -132,6 +139,9 @@ public:
 
 private:
     const Application& app;
+    // -parallel: `model` holds this rank's cells and ghosts; the feed and the destructor work
+    // on the whole model gathered on every rank, which is then cut anew (DemDecomposer).
+    DemDecomposer* decomposer = nullptr;
     DemParameters parameters;
     MachineLoading loading;
     std::unique_ptr<FeedFactory> factory;
@@ -149,7 +159,10 @@ private:
     double rayleighStep = 0.0;
     CriticalTimeStep critical;
 
-    // Bookkeeping.
+    // Bookkeeping. The cells inside and their mass change only when cells are fed or
+    // discharged: counted then, over the whole model in its order.
+    int cellsInside = 0;
+    double massInside = 0.0;
     double massDischarged = 0.0, mantleWork = 0.0;
     int fragmentsDischarged = 0;
     // Means over the steps since the last machine.dat row.
@@ -163,15 +176,22 @@ private:
     std::chrono::steady_clock::time_point wallStart;
     double cellSteps = 0.0;
 
-    double massInside() const;
+    bool writes() const { return !decomposer || decomposer->writes(); }
+    void countInside(const DemModel& whole);
     static std::vector<Column> machineColumns();
     std::vector<double> machineRow();
     void writeVtk(long step);
+    void discharge();
 };
 
-CrusherRun::CrusherRun(const Application& a, TimeLoop& loop) : TimedRun(loop), app(a)
+CrusherRun::CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
+    : TimedRun(loop), app(a), decomposer(d)
 {
     useCuda = readCudaBackend(controlDict);
+    if (decomposer && useCuda)
+        throw UserError(controlDict.location("backend").str() +
+                        ": backend cuda under -parallel is not built yet; set 'backend cpu;' in " +
+                        controlDict.fileName());
     parameters = readDemParameters(Dictionary::readFile(a.path("constant/rockProperties")));
     loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
     spin = MantleSpin(loading.spin);
@@ -205,11 +225,11 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop) : TimedRun(loop), a
     sampleInterval = readSampleInterval(controlDict, "machine", sampleInterval);
 }
 
-double CrusherRun::massInside() const
+void CrusherRun::countInside(const DemModel& whole)
 {
-    double m = 0.0;
-    for (double c : model->cells().mass) m += c;
-    return m;
+    cellsInside = whole.cells().size();
+    massInside = 0.0;
+    for (double c : whole.cells().mass) massInside += c;
 }
 
 std::vector<Column> CrusherRun::machineColumns()
@@ -236,10 +256,10 @@ std::vector<double> CrusherRun::machineRow()
                             sumTorque.y / n,
                             sumTorque.z / n,
                             sumPower / n,
-                            massInside(),
+                            massInside,
                             factory->massFed(),
                             massDischarged,
-                            double(model->cells().size()),
+                            double(cellsInside),
                             double(factory->rocksFed()),
                             double(fragmentsDischarged),
                             double(model->counters().bonds_broken),
@@ -263,15 +283,20 @@ std::vector<double> CrusherRun::machineRow()
 
 void CrusherRun::writeVtk(long step)
 {
-    if (model->cells().size() == 0) return;
+    if (cellsInside == 0) return;
     backend->download();
-    writeDemVtk(app.casePath(), static_cast<int>(step), *model, shapes, step > 0);
+    const DemModel* whole = decomposer ? decomposer->gather(*model) : model.get();
+    if (writes()) writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, step > 0);
 }
 
 // ---- the loop's hooks (core/timeLoop.hpp) ----------------------------------------
 
 long CrusherRun::start(bool)
 {
+    if (decomposer) {
+        decomposer->decompose(*model);
+        std::printf("%s\n", decomposer->describe().c_str());
+    }
     backend = std::make_unique<DemBackend>(*model, useCuda);
     if (useCuda) {
         std::printf("Backend: %s, %s (cells are fed and discharged on the host)\n",
@@ -279,6 +304,8 @@ long CrusherRun::start(bool)
     } else {
         std::printf("Backend: cpu (OpenMP)\n");
     }
+    wallStart = std::chrono::steady_clock::now();
+    if (!writes()) return 0;
     machineSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "machine", machineColumns());
     dischargeSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "discharge",
                                                          std::vector<Column>{{"Time", "s"},
@@ -287,7 +314,6 @@ long CrusherRun::start(bool)
                                                                              {"volume", "m^3"},
                                                                              {"equivalentDiameter", "m"},
                                                                              {"sieveSize", "m"}});
-    wallStart = std::chrono::steady_clock::now();
     return 0;
 }
 
@@ -305,13 +331,19 @@ void CrusherRun::beforeStep(long step)
         chokeLowered = true;
     }
     const long feedEvery = std::max(1L, std::lround(loading.feed.interval / runTime.deltaT()));
-    if (step % feedEvery == 0) {
+    if (step % feedEvery == 0 && factory->feeds(t)) {
         // Cells are inserted on the host (DemModel::insertCells, the same code for both
-        // backends): the device state comes down before and goes up after.
+        // backends): the device state comes down before and goes up after. A decomposed run
+        // inserts them into the whole model on every rank alike and cuts it anew.
         backend->download();  // the factory looks for free space among the current cells
-        const std::vector<InsertedRock> rocks = factory->feed(*model, t);
-        for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, *model);
-        if (!rocks.empty()) backend->upload();
+        DemModel& whole = decomposer ? decomposer->gatherEverywhere(*model) : *model;
+        const std::vector<InsertedRock> rocks = factory->feed(whole, t);
+        for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, whole);
+        if (!rocks.empty()) {
+            countInside(whole);
+            if (decomposer) decomposer->redistribute(*model);
+            backend->upload();
+        }
     }
     if (step == 0) backend->evaluateForces(runTime.deltaT());
 }
@@ -319,7 +351,7 @@ void CrusherRun::beforeStep(long step)
 StepResult CrusherRun::advance(double deltaT)
 {
     const long stepsBefore = model->counters().steps;
-    const double cellsBefore = model->cells().size();
+    const double cellsBefore = cellsInside;
     backend->step(deltaT);
     cellSteps += cellsBefore * double(model->counters().steps - stepsBefore);  // substeps too
     const DemStatus& status = model->status();
@@ -346,22 +378,40 @@ void CrusherRun::afterStep(long step)
     sumTorque += torque;
     sumPower += power;
     ++sampleSteps;
-    if (step % loading.destructor.interval != 0) return;
+    if (step % loading.destructor.interval == 0) discharge();
+    if (decomposer) redistributeWhenDue(*decomposer, *model, step);
+}
+
+// The destructor: fragments with a cell below its level leave. A decomposed run gathers the
+// whole model only when one of its ranks has such a cell.
+void CrusherRun::discharge()
+{
     backend->download();  // cells are removed on the host, as they are fed
-    const DestructorResult r = destroyBelow(*model, loading.destructor.below);
+    if (decomposer) {
+        bool below = false;
+        const CellArrays& cells = model->cells();
+        for (int c = 0; c < cells.size() && !below; ++c)
+            below = model->ownsCell(c) && cells.position[c].z < loading.destructor.below;
+        if (!decomposer->anyRank(below)) return;
+    }
+    DemModel& whole = decomposer ? decomposer->gatherEverywhere(*model) : *model;
+    const DestructorResult r = destroyBelow(whole, loading.destructor.below);
     if (r.fragments.empty()) return;
+    countInside(whole);
+    if (decomposer) decomposer->redistribute(*model);
     backend->upload();
     compactShapes(shapes, r.new_index);
     massDischarged += r.mass;
     fragmentsDischarged += static_cast<int>(r.fragments.size());
     for (const DischargedFragment& f : r.fragments)
-        dischargeSeries->append(
-            {f.time, double(f.n_cells), f.mass, f.volume, f.equivalent_diameter, f.sieve_size});
+        if (writes())
+            dischargeSeries->append(
+                {f.time, double(f.n_cells), f.mass, f.volume, f.equivalent_diameter, f.sieve_size});
 }
 
 std::string CrusherRun::writeFailure(long step)
 {
-    if (model->cells().size() == 0) return {};
+    if (cellsInside == 0) return {};
     writeVtk(step);
     return "VTK/cells_" + std::to_string(step) + ".vtu";
 }
@@ -375,8 +425,8 @@ std::string CrusherRun::progress() const
     const DemCounters& counters = model->counters();
     std::snprintf(buffer, sizeof(buffer),
                   "cells %d  fed %.4g kg  out %.4g kg  P %.4g kW  broken %d  cut %d+%d  split %ld",
-                  model->cells().size(), factory->massFed(), massDischarged, 1e-3 * lastPower,
-                  counters.bonds_broken, counters.pair_core_intersections,
+                  cellsInside, factory->massFed(), massDischarged, 1e-3 * lastPower, counters.bonds_broken,
+                  counters.pair_core_intersections,
                   counters.core_intersections - counters.pair_core_intersections, counters.split_steps);
     return buffer;
 }
@@ -424,7 +474,7 @@ void CrusherRun::report(bool)
 {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    const double inside = massInside(), fed = factory->massFed();
+    const double inside = massInside, fed = factory->massFed();
     std::printf(
         "Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg); %d rocks fed, %d "
         "fragments discharged\n",
@@ -438,13 +488,16 @@ void CrusherRun::report(bool)
     std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
     std::printf("Throughput of the solver: %.4g cell-steps/s (%.4g cell-steps in %.4g s wall)\n",
                 cellSteps / std::max(seconds, 1e-9), cellSteps, seconds);
+    if (decomposer)
+        std::printf("Parallel: the cells were cut anew %ld times (feed, discharge, moves, balance)\n",
+                    decomposer->redistributions());
 }
 
 }  // namespace
 
-std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop)
+std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop, DemDecomposer* decomposer)
 {
-    return std::make_unique<CrusherRun>(app, loop);
+    return std::make_unique<CrusherRun>(app, loop, decomposer);
 }
 
 }  // namespace rockfrac

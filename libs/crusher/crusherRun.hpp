@@ -23,6 +23,11 @@
 
 namespace rockfrac {
 
-std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop);
+class DemDecomposer;
+
+// decomposer: null for a serial run; with -parallel the feed and the destructor change the
+// whole model, gathered on every rank, which is then cut anew (demCase/demRun.hpp).
+std::unique_ptr<TimedRun> newCrusherRun(const Application& app, TimeLoop& loop,
+                                        DemDecomposer* decomposer = nullptr);
 
 }  // namespace rockfrac

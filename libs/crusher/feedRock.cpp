@@ -141,12 +141,17 @@ bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orie
     return false;
 }
 
+bool FeedFactory::feeds(double time) const
+{
+    double target = spec_.mass_rate * time;
+    if (spec_.total_mass > 0.0) target = std::min(target, spec_.total_mass);
+    return mass_fed_ < target;
+}
+
 std::vector<InsertedRock> FeedFactory::feed(DemModel& model, double time)
 {
     std::vector<InsertedRock> inserted;
-    double target = spec_.mass_rate * time;
-    if (spec_.total_mass > 0.0) target = std::min(target, spec_.total_mass);
-    while (mass_fed_ < target) {
+    while (feeds(time)) {
         const int k = rocks_fed_;
         const double u = uniform01(spec_.seed, k, 0);
         const double size = spec_.size_min + (spec_.size_max - spec_.size_min) * u;

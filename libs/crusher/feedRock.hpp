@@ -68,6 +68,8 @@ public:
     // The liners a rock must clear (the crusher's mantle and concave); none: not checked.
     void setLiners(std::vector<RevolvedLiner> liners) { liners_ = std::move(liners); }
     std::vector<InsertedRock> feed(DemModel& model, double time);
+    // Whether feed(model, time) would try to place a rock (the mass fed is behind the rate).
+    bool feeds(double time) const;
     double massFed() const { return mass_fed_; }
     int rocksFed() const { return rocks_fed_; }
     const FeedRockTemplate& rock() const { return rock_; }

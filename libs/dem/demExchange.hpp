@@ -51,8 +51,11 @@ public:
     // Every rank's terms, merged in (cell, wall) order (the same list on every rank).
     virtual std::vector<WallItemTerm> mergeWallTerms(const std::vector<WallItemTerm>& mine) = 0;
     // At every neighbour-list build: the ghost layer still holds every cell a cell of this rank
-    // can touch (else a UserError on every rank).
-    virtual void checkGhostReach(const CellArrays& cells) = 0;
+    // can touch (else a UserError on every rank), and the ranks' costs (`cost`: this rank's,
+    // DemModel::ownedCost) are compared: a redistribution falls due when a cell has moved half
+    // the ghost layer's allowance or the imbalance has grown past the tolerance (the same
+    // decision on every rank).
+    virtual void checkGhostReach(const CellArrays& cells, double cost) = 0;
     // Global cell id of local cell c.
     virtual std::int64_t globalCell(int c) const = 0;
 };

@@ -254,6 +254,11 @@ public:
     bool ownsCell(int c) const { return !exchange_ || owned_cell_[c]; }
     // The neighbour lists' skin: pairs within the two bounding radii plus this are listed [m].
     double skin() const { return skin_; }
+    // The decomposition's weights: per cell 1 + the items it takes part in as last listed
+    // (bond ends, contact pairs, wall triangles within reach; a plate counts 1).
+    std::vector<double> cellCosts() const;
+    // The counters as they are over all the ranks (a decomposed run's whole model, gathered).
+    void setCounters(const DemCounters& counters) { counters_ = counters; }
 
     // ---- Derived outputs ---------------------------------------------------
     // Fraction of the cell's initial bonds that are broken (0 for a cell without bonds).
@@ -315,6 +320,7 @@ private:
     void updateStatus(int non_finite_cell);
     // Decomposed: the energies and counters summed over the ranks; the first non-finite cell.
     int reduceOverRanks(int non_finite_cell);
+    double ownedCost() const;  // cellCosts summed over this rank's cells
     void countPairs();
     void countInterfaces();
     void sumWallReactionsOverRanks();

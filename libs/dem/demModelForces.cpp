@@ -196,6 +196,9 @@ void DemModel::gatherForces()
 
 void DemModel::computeForces(double dt)
 {
+    // Decomposed: the ghosts as their owners have them (after a drift, or after a kick when a
+    // moved wall makes the step start with an evaluation), bitwise.
+    if (exchange_) exchange_->refreshGhosts(cells_);
     refreshKinematicCaches();
     runBondKernel(dt);
     // Decomposed: the interfaces another rank computed (their first cell is its), before the

@@ -91,11 +91,11 @@ void DemModel::rebuildNeighbourLists()
     buildCellIncidence(n, pairs_.cell_a, pairs_.cell_b, cell_pair_offset_, cell_pairs_);
     counters_.contact_pairs_listed = pairs_.size();
     if (exchange_) {
-        exchange_->checkGhostReach(cells_);
         countPairs();
         exchange_->pairListsBuilt(pairs_);
     }
     buildWallItems();
+    if (exchange_) exchange_->checkGhostReach(cells_, ownedCost());
     position_at_build_ = cells_.position;
     wall_origin_at_build_.clear();
     wall_orientation_at_build_.clear();
@@ -144,6 +144,39 @@ void DemModel::buildWallItems()
     }
     resizeFields(next, next.cell.size());  // the rest: forces, energies, status and stiffness zero
     wall_items_ = std::move(next);
+}
+
+// Per cell: 1 + the items it takes part in (bond ends, listed contact pairs, wall triangles
+// within reach; a plate counts 1), the work of a step that goes with it.
+std::vector<double> DemModel::cellCosts() const
+{
+    std::vector<double> cost(cells_.size(), 1.0);
+    for (int k = 0; k < interfaces_.size(); ++k) {
+        const int bonds = interfaces_.bond_offset[k + 1] - interfaces_.bond_offset[k];
+        cost[interfaces_.cell_i[k]] += bonds;
+        cost[interfaces_.cell_j[k]] += bonds;
+    }
+    for (int p = 0; p < pairs_.size(); ++p) {
+        cost[pairs_.cell_a[p]] += 1.0;
+        cost[pairs_.cell_b[p]] += 1.0;
+    }
+    // Restored or gathered wall items carry their keys only (their triangles come with the next
+    // build): one each then. The cost must be the same on every rank that computes it.
+    const bool triangles =
+        wall_items_.triangle_offset.size() == static_cast<std::size_t>(wall_items_.size()) + 1;
+    for (int i = 0; i < wall_items_.size(); ++i)
+        cost[wall_items_.cell[i]] +=
+            triangles ? std::max(1, wall_items_.triangle_offset[i + 1] - wall_items_.triangle_offset[i]) : 1;
+    return cost;
+}
+
+double DemModel::ownedCost() const
+{
+    const std::vector<double> cost = cellCosts();
+    double sum = 0.0;
+    for (int c = 0; c < cells_.size(); ++c)
+        if (ownsCell(c)) sum += cost[c];
+    return sum;
 }
 
 }  // namespace rockfrac

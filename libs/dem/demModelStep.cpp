@@ -159,7 +159,6 @@ void DemModel::singleStep(double dt)
     bookFirstHalfKick(dt);
     kickDrift(dt);
     moveWalls(dt);
-    if (exchange_) exchange_->refreshGhosts(cells_);  // the owners' drift, bitwise
     computeForces(dt);
     kick(dt);
     time_ += dt;

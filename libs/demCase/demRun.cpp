@@ -119,9 +119,10 @@ public:
                            "reduce deltaT"};
     }
 
-    void afterStep(long) override
+    void afterStep(long step) override
     {
         if (loadingStarted) peakForce = std::max(peakForce, plateForce());
+        if (decomposer) redistributeWhenDue(*decomposer, *model, step);
     }
 
     void sample() override
@@ -388,9 +389,20 @@ void BondedDemRun::report(bool)
         e.externalWork(), e.kinetic(), e.stored(), e.dissipated(), e.fracture,
         e.balance() - model->initialBalance());
     std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
+    if (decomposer)
+        std::printf("Parallel: the cells were cut anew %ld times\n", decomposer->redistributions());
 }
 
 }  // namespace
+
+void redistributeWhenDue(DemDecomposer& decomposer, DemModel& local, long step)
+{
+    const std::string why = decomposer.redistributionDue();
+    if (why.empty()) return;
+    decomposer.gatherEverywhere(local);
+    decomposer.redistribute(local);
+    std::printf("Step %ld: cells cut anew (%s). %s\n", step, why.c_str(), decomposer.describe().c_str());
+}
 
 std::unique_ptr<TimedRun> newBondedDemRun(const Application& app, TimeLoop& loop, DemDecomposer* decomposer)
 {

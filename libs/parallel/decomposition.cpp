@@ -42,7 +42,8 @@ const Selector<DecompositionMethod>& decompositionMethods()
 
 const std::vector<std::string>& decomposeParDictEntries()
 {
-    static const std::vector<std::string> entries = {"numberOfSubdomains", "method", "weights", "rcb"};
+    static const std::vector<std::string> entries = {"numberOfSubdomains", "method", "weights", "rcb",
+                                                     "imbalanceTolerance"};
     return entries;
 }
 
@@ -57,6 +58,8 @@ DecomposeParameters readDecomposeParameters(const Dictionary& dict)
     p.n_subdomains = static_cast<int>(n);
     p.method = decompositionMethods().select(dict, "method");
     p.cost_weights = dict.getWord("weights", {"cost", "uniform"}) == "cost";
+    p.imbalance_tolerance =
+        dict.getScalarOrDefault("imbalanceTolerance", p.imbalance_tolerance, Bounds::closed(0.0, 100.0));
     return p;
 }
 

@@ -7,7 +7,8 @@
 //
 //     numberOfSubdomains  4;
 //     method              rcb;     // weighted recursive coordinate bisection
-//     weights             cost;    // cost: 1 + the cell's bond ends; uniform: 1 per cell
+//     weights             cost;    // cost: 1 + the items of the cell; uniform: 1 per cell
+//     imbalanceTolerance  0.2;     // optional: re-balance when the imbalance grows by this
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -35,6 +36,9 @@ struct DecomposeParameters {
     int n_subdomains = 1;
     std::shared_ptr<const DecompositionMethod> method;
     bool cost_weights = true;  // weights cost (true) or uniform (false)
+    // A decomposed run cuts its cells anew when the ranks' cost imbalance (largest / mean - 1)
+    // grows past the one after the last cut by more than this (imbalanceTolerance, default 0.2).
+    double imbalance_tolerance = 0.2;
 };
 
 // Reads and checks <case>/system/decomposeParDict; a UserError naming the file and line of

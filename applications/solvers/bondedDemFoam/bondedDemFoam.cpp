@@ -12,8 +12,8 @@
 // postProcessing/machine/0/machine.dat and postProcessing/discharge/0/discharge.dat.
 // Writes <time>/demState (restart), postProcessing/plateForce/0/plateForce.dat,
 //        VTK/cells_<step>.vtu, VTK/bonds_<step>.vtp and their .series files
-// `mpirun -np N bondedDemFoam -parallel` decomposes a plates case over N ranks
-// (system/decomposeParDict, libs/parallel/mpi): the same plateForce.dat forces.
+// `mpirun -np N bondedDemFoam -parallel` decomposes the case over N ranks
+// (system/decomposeParDict, libs/parallel/mpi): the same forces as the serial run.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -51,7 +51,7 @@ const AppInfo info{
     {"bondedDemFoam -case tutorials/BDT/granite", "bondedDemFoam -case tutorials/BDT/granite -dry-run",
      "bondedDemFoam -case tutorials/CH660/tiny",
      "mpirun -np 2 bondedDemFoam -parallel -case tutorials/BDT/granite"},
-    {{"-parallel", "", "run decomposed over mpirun's ranks (system/decomposeParDict; plates cases)"}},
+    {{"-parallel", "", "run decomposed over mpirun's ranks (system/decomposeParDict)"}},
 };
 
 #ifdef ROCKFRAC_HAVE_MPI
@@ -77,6 +77,19 @@ public:
         mpi::gatherModel(local, *exchange_, whole_.get());
         return whole_.get();
     }
+    DemModel& gatherEverywhere(const DemModel& local) override
+    {
+        mpi::gatherModel(local, *exchange_, whole_.get(), true);
+        return *whole_;
+    }
+    void redistribute(DemModel& local) override
+    {
+        local = *whole_;
+        exchange_ = mpi::decomposeDemModel(local, parameters_, MPI_COMM_WORLD);
+        ++redistributions_;
+    }
+    std::string redistributionDue() const override { return exchange_->redistributionDue(); }
+    long redistributions() const override { return redistributions_; }
     bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
     bool anyRank(bool mine) override { return exchange_->anyRank(mine); }
     std::string describe() const override
@@ -87,7 +100,9 @@ public:
 private:
     DecomposeParameters parameters_;
     std::unique_ptr<mpi::MpiDemExchange> exchange_;
-    std::unique_ptr<DemModel> whole_;  // rank 0: the whole model, gathered into at write times
+    std::unique_ptr<DemModel> whole_;  // the whole model, gathered into at write times (rank 0) and
+                                       // before a redistribution (every rank)
+    long redistributions_ = 0;
 };
 
 bool parallelRequested(int argc, char** argv)
@@ -111,10 +126,6 @@ int main(int argc, char** argv)
         std::unique_ptr<DemDecomposer> decomposer;
         if (app.has("-parallel")) {
 #ifdef ROCKFRAC_HAVE_MPI
-            if (crusher)
-                throw UserError(loading.string() +
-                                ": -parallel runs plates cases only yet (the crusher's feed and discharge "
-                                "across ranks are not built); run the crusher without -parallel");
             decomposer = std::make_unique<MpiDecomposer>(app);
 #else
             throw UserError("-parallel: this build has no MPI; install OpenMPI (utilities/installDependencies) "
@@ -124,8 +135,8 @@ int main(int argc, char** argv)
         // system/controlDict: time and write control, the DEM step, the run's function.
         TimeLoop loop(app, {demControlEntries(), {crusher ? "machine" : "plateForce"}});
         // Reads and checks every input: plates on a specimen, or a cone crusher.
-        const std::unique_ptr<TimedRun> run =
-            crusher ? newCrusherRun(app, loop) : newBondedDemRun(app, loop, decomposer.get());
+        const std::unique_ptr<TimedRun> run = crusher ? newCrusherRun(app, loop, decomposer.get())
+                                                      : newBondedDemRun(app, loop, decomposer.get());
         run->printSetup();
         // Until endTime or the stop criterion: per step the stage, the step, the rows and
         // the write rules; SIGINT/SIGTERM write the state (libs/core/timeLoop.hpp).

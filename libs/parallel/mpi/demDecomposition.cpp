@@ -9,24 +9,6 @@
 
 namespace rockfrac::mpi {
 
-namespace {
-
-// The cost weight of each cell as decomposeCells gives it: 1 + its bond ends.
-std::vector<double> cellWeights(const DemModel& model, bool cost)
-{
-    std::vector<double> weights(model.cells().size(), 1.0);
-    if (!cost) return weights;
-    const InterfaceArrays& f = model.interfaces();
-    for (int k = 0; k < f.size(); ++k) {
-        const int bonds = f.bond_offset[k + 1] - f.bond_offset[k];
-        weights[f.cell_i[k]] += bonds;
-        weights[f.cell_j[k]] += bonds;
-    }
-    return weights;
-}
-
-}  // namespace
-
 std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const DecomposeParameters& parameters,
                                                   MPI_Comm comm, std::unique_ptr<DemModel>* whole)
 {
@@ -42,8 +24,13 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
     // Any cell may move by the largest cell's reach before the layer must be rebuilt.
     const double allowance = n > 0 ? *std::max_element(reach.begin(), reach.end()) : 0.0;
     const double margin = model.skin() + 2.0 * allowance;
+    // A model with fewer cells than ranks (a crusher filling up) leaves the last ranks idle.
+    const int parts = std::min(n_ranks, n);
     const std::vector<int> part_of =
-        parameters.method->decompose(centroids, cellWeights(model, parameters.cost_weights), n_ranks);
+        parts == 0 ? std::vector<int>{}
+                   : parameters.method->decompose(
+                         centroids, parameters.cost_weights ? model.cellCosts() : std::vector<double>(n, 1.0),
+                         parts);
 
     // Every rank's cells and ghosts, worked out alike on every rank (so the lists of what to
     // send need no message): held[q][c] when rank q keeps cell c.
@@ -72,7 +59,7 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
     for (int c = 0; c < n; ++c) remove[c] = !held[me][c];
     // removeCellsOnly keeps the forces of a restored state (the next step continues from them,
     // as the serial run does), the step check's bound and the histories as they are.
-    if (whole && me == 0) *whole = std::make_unique<DemModel>(model);
+    if (whole) *whole = std::make_unique<DemModel>(model);
     const DemEnergies energies = model.energies();
     const DemCounters counters = model.counters();
     const DemForceRates rates = model.forceRates();
@@ -106,6 +93,7 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
         std::make_unique<MpiDemExchange>(comm, std::move(global_cell), std::move(global_interface), owned,
                                          std::move(neighbours), std::move(start), allowance);
     exchange->interfacesDecomposed(model.interfaces());
+    exchange->setImbalanceTolerance(parameters.imbalance_tolerance);
     model.decompose(exchange.get(), owned, energies, counters, rates);
     return exchange;
 }

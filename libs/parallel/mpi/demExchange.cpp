@@ -265,18 +265,43 @@ std::vector<WallItemTerm> MpiDemExchange::mergeWallTerms(const std::vector<WallI
     return all;
 }
 
-void MpiDemExchange::checkGhostReach(const CellArrays& cells)
+void MpiDemExchange::checkGhostReach(const CellArrays& cells, double cost)
 {
     double moved2 = 0.0;
     for (int c = 0; c < cells.size(); ++c)
         if (owned_[c]) moved2 = std::max(moved2, norm2(cells.position[c] - start_position_[c]));
-    const double moved = std::sqrt(maxOverRanks(moved2));
-    if (!(moved <= allowance_))
-        throw UserError("bondedDemFoam -parallel: a cell has moved " + std::to_string(1e3 * moved) +
+    // The largest move, the largest and the total cost: the same figures on every rank.
+    std::vector<double> costs = {cost};
+    moved_ = std::sqrt(maxOverRanks(moved2));
+    const double most = maxOverRanks(cost);
+    sumOverRanks(costs);
+    const double mean = costs[0] / size_;
+    imbalance_ = mean > 0.0 ? most / mean - 1.0 : 0.0;
+    if (baseline_imbalance_ < 0.0) baseline_imbalance_ = imbalance_;
+    if (!(moved_ <= allowance_))
+        throw UserError("bondedDemFoam -parallel: a cell has moved " + std::to_string(1e3 * moved_) +
                         " mm since the decomposition, beyond the ghost layer's allowance of " +
                         std::to_string(1e3 * allowance_) +
-                        " mm; decomposing again during a run is not built yet: run this case serially or "
-                        "stop before the cells move this far");
+                        " mm between two list builds (the run decomposes again when a cell has moved half "
+                        "of it); likely cause: a cell flying off at a speed the time step cannot follow; "
+                        "reduce deltaT");
+}
+
+std::string MpiDemExchange::redistributionDue() const
+{
+    if (baseline_imbalance_ < 0.0) return {};  // no list built since the cut
+    char why[200];
+    if (moved_ > 0.5 * allowance_) {
+        std::snprintf(why, sizeof(why), "a cell moved %.4g mm, half the ghost layer's allowance",
+                      1e3 * moved_);
+        return why;
+    }
+    if (imbalance_ > baseline_imbalance_ + imbalance_tolerance_) {
+        std::snprintf(why, sizeof(why), "imbalance %.3g against %.3g after the last cut (tolerance %.3g)",
+                      imbalance_, baseline_imbalance_, imbalance_tolerance_);
+        return why;
+    }
+    return {};
 }
 
 int MpiDemExchange::ownedCells() const

@@ -44,7 +44,7 @@ public:
     double maxOverRanks(double mine) override;
     void sumOverRanks(std::vector<double>& values) override;
     std::vector<WallItemTerm> mergeWallTerms(const std::vector<WallItemTerm>& mine) override;
-    void checkGhostReach(const CellArrays& cells) override;
+    void checkGhostReach(const CellArrays& cells, double cost) override;
     void returnInterfaceResults(InterfaceArrays& interfaces) override;
     void returnPairResults(ContactPairArrays& pairs) override;
     void pairListsBuilt(const ContactPairArrays& pairs) override;
@@ -62,6 +62,13 @@ public:
     std::uint64_t bytesPerStep()
         const;  // ghost states and item results sent per force evaluation (current lists)
     double allowance() const { return allowance_; }
+    // Why the cells should be cut anew (empty when they need not): at the last list build a
+    // cell had moved more than half the allowance since this cut, or the ranks' cost imbalance
+    // (largest / mean - 1) exceeded the one measured at the first build after this cut by more
+    // than the tolerance (decomposeParDict imbalanceTolerance). The same on every rank.
+    std::string redistributionDue() const;
+    void setImbalanceTolerance(double tolerance) { imbalance_tolerance_ = tolerance; }
+    double imbalance() const { return imbalance_; }
     // Wall-clock seconds this rank spent in the exchange's calls (messages, collectives and the
     // waiting for slower ranks in them), and how many calls, since the start.
     double exchangeSeconds() const { return exchange_seconds_; }
@@ -76,6 +83,7 @@ private:
     std::vector<Neighbour> neighbours_;
     std::vector<Vec3> start_position_;
     double allowance_ = 0.0;
+    double moved_ = 0.0, imbalance_ = 0.0, baseline_imbalance_ = -1.0, imbalance_tolerance_ = 0.2;
     std::vector<std::vector<double>> send_buffer_, recv_buffer_;
     std::vector<int> owner_;  // per local cell: the rank owning it
     // Per neighbour (as neighbours_): the items whose results go there (first cell mine, second
@@ -99,16 +107,19 @@ private:
 // Cuts `model` (the same whole model on every rank) down to this rank's cells and ghosts and
 // connects it to the others; numberOfSubdomains must equal the number of ranks (UserError).
 // A model restored from a state file keeps its forces (the next step continues bitwise).
-// `whole`, when given, gets on rank 0 a copy of the whole model to gather into (gatherModel).
-// Collective. The returned exchange must outlive the model's steps.
+// `whole`, when given, gets on every rank a copy of the whole model to gather into
+// (gatherModel). The cost weights are DemModel::cellCosts (the items as last listed).
+// Collective. The returned exchange must outlive the model's steps. Called again on a model
+// copied from a gathered whole model, it cuts the cells anew (migration and re-balancing).
 std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const DecomposeParameters& parameters,
                                                   MPI_Comm comm, std::unique_ptr<DemModel>* whole = nullptr);
 
-// The state of every rank's cells, bonds, contacts and walls, the clock, energies and force
-// rates, set into rank 0's copy of the whole model (the arrays a state file and the VTK
-// frames are written from: <time>/demState as the serial run writes it). Collective; `whole`
-// is used on rank 0 only.
-void gatherModel(const DemModel& local, MpiDemExchange& exchange, DemModel* whole);
+// The state of every rank's cells, bonds, contacts and walls, the clock, counters, energies and
+// force rates, set into rank 0's copy of the whole model (the arrays a state file and the VTK
+// frames are written from: <time>/demState as the serial run writes it), or with `everywhere`
+// into every rank's copy (to cut anew from). Collective; `whole` is used on rank 0 only unless
+// everywhere.
+void gatherModel(const DemModel& local, MpiDemExchange& exchange, DemModel* whole, bool everywhere = false);
 
 // One line for the log: the rank's cells, ghosts, neighbours, bytes per step and the allowance.
 std::string describeDecomposition(const MpiDemExchange& exchange, const DecomposeParameters& parameters,

@@ -14,18 +14,28 @@ namespace {
 using fieldDetail::put;
 using fieldDetail::take;
 
-// Every rank's bytes on rank 0 (indexed by rank; empty elsewhere).
-std::vector<std::vector<unsigned char>> gatherBytes(const std::vector<unsigned char>& mine, MPI_Comm comm)
+// Every rank's bytes on rank 0, or on every rank (indexed by rank; empty elsewhere).
+std::vector<std::vector<unsigned char>> gatherBytes(const std::vector<unsigned char>& mine, MPI_Comm comm,
+                                                    bool everywhere)
 {
     const int n_ranks = size(comm), me = rank(comm);
+    const bool receives = everywhere || me == 0;
     const int bytes = static_cast<int>(mine.size());
     std::vector<int> counts(n_ranks), offsets(n_ranks + 1, 0);
-    MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+    if (everywhere)
+        MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+    else
+        MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
     for (int r = 0; r < n_ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
-    std::vector<unsigned char> all(me == 0 ? offsets[n_ranks] : 0);
-    MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0, comm);
-    std::vector<std::vector<unsigned char>> out(me == 0 ? n_ranks : 0);
-    for (int r = 0; me == 0 && r < n_ranks; ++r)
+    std::vector<unsigned char> all(receives ? offsets[n_ranks] : 0);
+    if (everywhere)
+        MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                       comm);
+    else
+        MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0,
+                    comm);
+    std::vector<std::vector<unsigned char>> out(receives ? n_ranks : 0);
+    for (int r = 0; receives && r < n_ranks; ++r)
         out[r].assign(all.begin() + offsets[r], all.begin() + offsets[r + 1]);
     return out;
 }
@@ -72,10 +82,10 @@ Group mergeCounted(const std::vector<std::vector<unsigned char>>& from, Key&& ke
 
 }  // namespace
 
-void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole)
+void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole, bool everywhere)
 {
     const MPI_Comm comm = ex.comm();
-    const bool root = rank(comm) == 0;
+    const bool root = everywhere || rank(comm) == 0;
     // Cells: the state and the forces of the last step, by global id.
     const CellArrays& cells = local.cells();
     std::vector<unsigned char> cell_bytes;
@@ -118,10 +128,10 @@ void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole)
     std::vector<double> rates = {local.forceRates().bond_damping, local.forceRates().contact_damping};
     ex.sumOverRanks(rates);
 
-    const auto cell_from = gatherBytes(cell_bytes, comm);
-    const auto bond_from = gatherBytes(bond_bytes, comm);
-    const auto pair_from = gatherBytes(pair_bytes, comm);
-    const auto item_from = gatherBytes(item_bytes, comm);
+    const auto cell_from = gatherBytes(cell_bytes, comm, everywhere);
+    const auto bond_from = gatherBytes(bond_bytes, comm, everywhere);
+    const auto pair_from = gatherBytes(pair_bytes, comm, everywhere);
+    const auto item_from = gatherBytes(item_bytes, comm, everywhere);
     if (!root || !whole) return;
 
     CellArrays state = whole->cells();
@@ -161,6 +171,7 @@ void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole)
     for (int w = 0; w < local.nWalls(); ++w) whole->setWallState(w, local.wall(w));
     whole->setForceRates({rates[0], rates[1]});
     whole->setClock(local.time(), local.counters().steps, local.energies(), local.initialBalance());
+    whole->setCounters(local.counters());
     whole->setCellForces(state);
     whole->setContactFrequencyBound(local.contactFrequencyBound());
 }

@@ -11,8 +11,9 @@
 # from its latest time directory, and a run stopped by SIGTERM to mpirun (every rank stops at
 # the same step and the state is written there), continued. The full size runs to the split
 # (the stop criterion: bonds breaking, contacts, 379 list rebuilds); the small size (the
-# sanitized pass) to 1.5e-4 s with 2 and 4 ranks only, without the signal. Bad input: numberOfSubdomains other than -np, and a crusher case
-# under -parallel, each exit 1 with one message naming the file.
+# sanitized pass) to 1.5e-4 s with 2 and 4 ranks only, without the signal. Bad input:
+# numberOfSubdomains other than -np, and an imbalanceTolerance below 0, each exit 1 with one
+# message naming the file.
 source "$(dirname "$0")/../caseTestFunctions"
 source "$(dirname "$0")/mpiTestFunctions"
 
@@ -25,12 +26,7 @@ if [ "$(bySize full small)" = small ]; then
     caseDict -case . system/controlDict -entry endTime -set 1.5e-4 > /dev/null
     caseDict -case . system/controlDict -entry writeInterval -set 5e-5 > /dev/null
 fi
-cat > system/decomposeParDict <<'DICT'
-FoamFile { format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains  2;
-method              rcb;
-weights             cost;
-DICT
+writeDecomposeParDict 2
 dat=$mpiDat
 
 cp -r "$work/base" "$work/serial"
@@ -69,8 +65,10 @@ echo "$rows rows identical for $(bySize "1, 2 and 4 ranks and 2 ranks x 2 thread
 
 # Restart with other numbers of ranks: 4 ranks to a write time, 2 ranks to a later one (a run
 # ending between write times adds a row there), then serially to the end.
+# The legs re-balance whenever a list build finds the ranks' imbalance grown (imbalanceTolerance 0).
 cp -r "$work/base" "$work/restart"
 cd "$work/restart"
+caseDict -case . system/decomposeParDict -entry imbalanceTolerance -add 0 > /dev/null
 for leg in "4 $(bySize 3e-4 5e-5)" "2 $(bySize 6e-4 1e-4)" "1 $(caseDict -case . system/controlDict -entry endTime -value)"; do
     set -- $leg
     caseDict -case . system/controlDict -entry endTime -set "$2" > /dev/null
@@ -82,6 +80,9 @@ for leg in "4 $(bySize 3e-4 5e-5)" "2 $(bySize 6e-4 1e-4)" "1 $(caseDict -case .
     fi
 done
 grep -q "^Restart from time" log.2 && grep -q "^Restart from time" log.1 || fail "the continuations did not restart"
+balanced=$(cat log.4 log.2 | tr '\r' '\n' | grep -c "cells cut anew (imbalance" || true)
+# (the small size ends before contacts form: the costs do not change)
+[ "$balanced" -ge "$(bySize 1 0)" ] || fail "the 4- and 2-rank legs never re-balanced (imbalanceTolerance 0)"
 same "$work/restart"
 
 # A rank killed: the run ends, its time directories are whole, and the restart ends as the serial run.
@@ -133,6 +134,7 @@ refused() {
 cp -r "$work/base" "$work/mismatch"
 caseDict -case "$work/mismatch" system/decomposeParDict -entry numberOfSubdomains -set 3 > /dev/null
 refused "$work/mismatch" 2 "decomposeParDict: numberOfSubdomains is 3 but mpirun started 2 ranks"
-copyTutorial tutorials/CH660/tiny "$work/crusher"
-refused "$work/crusher" 1 "constant/loading: -parallel runs plates cases only yet"
+cp -r "$work/base" "$work/tolerance"
+caseDict -case "$work/tolerance" system/decomposeParDict -entry imbalanceTolerance -add -1 > /dev/null
+refused "$work/tolerance" 2 "decomposeParDict:.*imbalanceTolerance"
 echo "bad input: exit 1 with one message"

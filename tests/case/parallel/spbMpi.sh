@@ -16,7 +16,7 @@ for app in meshRock voronoiMesh; do "$app" > "log.$app" 2>&1 || fail "$app faile
 endTime=$(caseDict -case . system/controlDict -entry endTime -value)
 caseDict -case . system/controlDict -entry endTime -set "$(awk -v t="$endTime" -v f="$(bySize 0.25 0.15)" 'BEGIN { printf "%.6g", f * t }')" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set "$(awk -v t="$endTime" 'BEGIN { printf "%.6g", t / 40 }')" > /dev/null
-printf 'FoamFile { format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod rcb;\nweights cost;\n' > system/decomposeParDict
+writeDecomposeParDict 2
 dat=$mpiDat
 cp -r . "$work/serial"
 (cd "$work/serial" && bondedDemFoam > log 2>&1) || fail "serial run failed: $(tail -3 "$work/serial/log")"
