@@ -390,7 +390,11 @@ void BondedDemRun::report(bool)
         e.balance() - model->initialBalance());
     std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
     if (decomposer)
-        std::printf("Parallel: the cells were cut anew %ld times\n", decomposer->redistributions());
+        std::printf(
+            "Parallel: the cells were cut anew %ld times (%.3g s, %.4g MB of whole states gathered on rank "
+            "0)\n",
+            decomposer->redistributions(), decomposer->redistributionSeconds(),
+            1e-6 * decomposer->redistributionBytes());
 }
 
 }  // namespace

@@ -42,8 +42,10 @@ public:
     virtual void redistribute(DemModel& local) = 0;
     // Why the cells should be cut anew now (empty: they need not), the same on every rank.
     virtual std::string redistributionDue() const = 0;
-    virtual long redistributions() const = 0;  // so far
-    virtual std::string describe() const = 0;  // the log's line, after decompose
+    virtual long redistributions() const = 0;          // so far
+    virtual double redistributionSeconds() const = 0;  // their wall time so far (gathers included)
+    virtual double redistributionBytes() const = 0;    // the whole states gathered for them so far
+    virtual std::string describe() const = 0;          // the log's line, after decompose
 };
 
 // After a step of a decomposed run: when the decomposer says a redistribution is due, the

@@ -15,6 +15,7 @@
 // `mpirun -np N bondedDemFoam -parallel` decomposes the case over N ranks
 // (system/decomposeParDict, libs/parallel/mpi): the same forces as the serial run.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -79,17 +80,23 @@ public:
     }
     DemModel& gatherEverywhere(const DemModel& local) override
     {
-        mpi::gatherModel(local, *exchange_, whole_.get(), true);
+        const auto start = std::chrono::steady_clock::now();
+        bytes_ += static_cast<double>(mpi::gatherModel(local, *exchange_, whole_.get(), true));
+        seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return *whole_;
     }
     void redistribute(DemModel& local) override
     {
+        const auto start = std::chrono::steady_clock::now();
         local = *whole_;
         exchange_ = mpi::decomposeDemModel(local, parameters_, MPI_COMM_WORLD);
         ++redistributions_;
+        seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     std::string redistributionDue() const override { return exchange_->redistributionDue(); }
     long redistributions() const override { return redistributions_; }
+    double redistributionSeconds() const override { return seconds_; }
+    double redistributionBytes() const override { return bytes_; }
     bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
     bool anyRank(bool mine) override { return exchange_->anyRank(mine); }
     std::string describe() const override
@@ -103,6 +110,7 @@ private:
     std::unique_ptr<DemModel> whole_;  // the whole model, gathered into at write times (rank 0) and
                                        // before a redistribution (every rank)
     long redistributions_ = 0;
+    double seconds_ = 0.0, bytes_ = 0.0;
 };
 
 bool parallelRequested(int argc, char** argv)

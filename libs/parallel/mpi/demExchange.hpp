@@ -119,7 +119,9 @@ std::unique_ptr<MpiDemExchange> decomposeDemModel(DemModel& model, const Decompo
 // frames are written from: <time>/demState as the serial run writes it), or with `everywhere`
 // into every rank's copy (to cut anew from). Collective; `whole` is used on rank 0 only unless
 // everywhere.
-void gatherModel(const DemModel& local, MpiDemExchange& exchange, DemModel* whole, bool everywhere = false);
+// Returns the bytes this rank received (the whole state's size where it was gathered, else 0).
+std::size_t gatherModel(const DemModel& local, MpiDemExchange& exchange, DemModel* whole,
+                        bool everywhere = false);
 
 // One line for the log: the rank's cells, ghosts, neighbours, bytes per step and the allowance.
 std::string describeDecomposition(const MpiDemExchange& exchange, const DecomposeParameters& parameters,

@@ -82,7 +82,7 @@ Group mergeCounted(const std::vector<std::vector<unsigned char>>& from, Key&& ke
 
 }  // namespace
 
-void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole, bool everywhere)
+std::size_t gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole, bool everywhere)
 {
     const MPI_Comm comm = ex.comm();
     const bool root = everywhere || rank(comm) == 0;
@@ -132,7 +132,10 @@ void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole, boo
     const auto bond_from = gatherBytes(bond_bytes, comm, everywhere);
     const auto pair_from = gatherBytes(pair_bytes, comm, everywhere);
     const auto item_from = gatherBytes(item_bytes, comm, everywhere);
-    if (!root || !whole) return;
+    if (!root || !whole) return 0;
+    std::size_t received = 0;
+    for (const auto* from : {&cell_from, &bond_from, &pair_from, &item_from})
+        for (const auto& in : *from) received += in.size();
 
     CellArrays state = whole->cells();
     for (const auto& in : cell_from)
@@ -174,6 +177,7 @@ void gatherModel(const DemModel& local, MpiDemExchange& ex, DemModel* whole, boo
     whole->setCounters(local.counters());
     whole->setCellForces(state);
     whole->setContactFrequencyBound(local.contactFrequencyBound());
+    return received;
 }
 
 }  // namespace rockfrac::mpi
