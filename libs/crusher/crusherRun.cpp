@@ -89,16 +89,25 @@ RevolvedLiner addLiner(DemModel& model, const fs::path& stl, const WallMotion& m
 }
 
 // The most the feed brings by endTime: massRate x endTime (at most totalMass) in rocks of the
-// smallest size, one more for the last rock's overshoot, each a copy of the template rock; as
-// if none left (an upper estimate). Refused before any cell exists when it cannot fit;
-// returns the -dry-run line.
+// lightest class's smallest size, one more for the last rock's overshoot, each with the most
+// cells, vertices, faces and bonds of any class's template; as if none left (an upper
+// estimate). Refused before any cell exists when it cannot fit; returns the -dry-run line.
 std::string checkFeedMemory(const fs::path& loadingFile, const FeedSpec& feed, double endTime,
                             double smallestRockMass)
 {
     double mass = feed.mass_rate * endTime;
     if (feed.total_mass > 0) mass = std::min(mass, feed.total_mass);
     const auto rocks = static_cast<std::uint64_t>(std::min(std::floor(mass / smallestRockMass) + 1.0, 1e7));
-    const VoronoiMeshSizes one = readVoronoiMeshSizes(feed.rock_case);
+    VoronoiMeshSizes one;
+    for (const FeedClass& c : feed.classes) {
+        const VoronoiMeshSizes t = readVoronoiMeshSizes(c.rock_case);
+        one.nCells = std::max(one.nCells, t.nCells);
+        one.nVertices = std::max(one.nVertices, t.nVertices);
+        one.nFaces = std::max(one.nFaces, t.nFaces);
+        one.nFaceVertices = std::max(one.nFaceVertices, t.nFaceVertices);
+        one.nBondedFaces = std::max(one.nBondedFaces, t.nBondedFaces);
+        one.nBonds = std::max(one.nBonds, t.nBonds);
+    }
     const VoronoiMeshSizes all{one.nCells * rocks,        one.nVertices * rocks,    one.nFaces * rocks,
                                one.nFaceVertices * rocks, one.nBondedFaces * rocks, one.nBonds * rocks};
     const std::uint64_t bytes = estimateDemMemoryBytes(all);
@@ -158,6 +167,7 @@ private:
     long sampleInterval = 100;  // steps between machine.dat rows (functions/machine/writeInterval)
     double rayleighStep = 0.0;
     CriticalTimeStep critical;
+    int stepClass = 0;  // the feed class whose smallest rock sets the stable step
 
     // Bookkeeping. The cells inside and their mass change only when cells are fed or
     // discharged: counted then, over the whole model in its order.
@@ -178,6 +188,7 @@ private:
 
     bool writes() const { return !decomposer || decomposer->writes(); }
     void countInside(const DemModel& whole);
+    std::string feedClassLine(int i) const;
     static std::vector<Column> machineColumns();
     std::vector<double> machineRow();
     void writeVtk(long step);
@@ -196,9 +207,10 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
     loading = readMachineLoading(Dictionary::readFile(a.path("constant/loading")), a.casePath());
     spin = MantleSpin(loading.spin);
     parameters.gravity = loading.gravity;
-    const VoronoiMesh rockMesh = readVoronoiMesh(loading.feed.rock_case);
-    factory =
-        std::make_unique<FeedFactory>(loading.feed, makeFeedRockTemplate(rockMesh, parameters.rock_density));
+    std::vector<FeedRockTemplate> rocks;
+    for (const FeedClass& c : loading.feed.classes)
+        rocks.push_back(makeFeedRockTemplate(readVoronoiMesh(c.rock_case), parameters.rock_density));
+    factory = std::make_unique<FeedFactory>(loading.feed, std::move(rocks));
     model = std::make_unique<DemModel>(parameters);
     const MantlePose start = mantlePose(loading.machine.kinematics, 0.0);
     std::vector<RevolvedLiner> liners;
@@ -209,16 +221,28 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
     concave = liners[1].wall;
     factory->setLiners(std::move(liners));
     if (loading.choke.enabled) choke = model->addPlate({0, 0, loading.choke.level}, {0, 0, 1});
-    // The step of the smallest feed rock (its bonds and contacts are the stiffest per mass).
-    const DemModel probe(factory->smallestRock(), parameters);
-    rayleighStep = probe.rayleighTimeStep();
-    critical = probe.criticalTimeStep();
+    // The step of the smallest rock of each size class (its bonds and contacts are the
+    // stiffest per mass of the class, whose cells scale with it); the shortest wins.
     double smallestRockMass = 0.0;
-    for (double m : probe.cells().mass) smallestRockMass += m;
+    for (int i = 0; i < factory->classes(); ++i) {
+        const DemModel probe(factory->smallestRock(i), parameters);
+        const CriticalTimeStep c = probe.criticalTimeStep();
+        double mass = 0.0;
+        for (double m : probe.cells().mass) mass += m;
+        if (i == 0 || c.value < critical.value) {
+            critical = c;
+            stepClass = i;
+        }
+        rayleighStep = i == 0 ? probe.rayleighTimeStep() : std::min(rayleighStep, probe.rayleighTimeStep());
+        smallestRockMass = i == 0 ? mass : std::min(smallestRockMass, mass);
+    }
     const std::string estimate =
         checkFeedMemory(a.path("constant/loading"), loading.feed, runTime.endTime(), smallestRockMass);
     if (a.dryRun()) std::printf("%s\n", estimate.c_str());
-    chooseDemTimeStep(controlDict, runTime, rayleighStep, critical, "the smallest feed rock");
+    chooseDemTimeStep(controlDict, runTime, rayleighStep, critical,
+                      factory->classes() == 1
+                          ? std::string("the smallest feed rock")
+                          : "the smallest feed rock of class " + loading.feed.classes[stepClass].name);
     // Steps too long for a cell pressed into many contact points are split (DemModel::step).
     model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,
                         critical.bond_damping_ratio);
@@ -441,9 +465,29 @@ std::string spinText(const MantleSpinSpec& s)
     return buffer;
 }
 
+// One size class: its sizes, template rock, and the band of its cells' sizes it gives (the
+// volume-equivalent diameter of the template's mean cell, scaled to the class's smallest and
+// largest rock), also as a fraction of the CSS.
+std::string CrusherRun::feedClassLine(int i) const
+{
+    const FeedRockTemplate& rock = factory->rock(i);
+    const FeedClass& c = loading.feed.classes[i];
+    const auto [lo, hi] = feedClassSizes(loading.feed, i);
+    const double cell = std::cbrt(6.0 / 3.14159265358979323846 * rock.volume / rock.mesh.nCells());
+    const double small = cell * lo / rock.sieve_size, large = cell * hi / rock.sieve_size;
+    const double css = loading.machine.closed_side_setting;
+    char buffer[600];
+    std::snprintf(buffer, sizeof(buffer),
+                  "Feed class %s: sizes %.4g-%.4g mm, rock %s: %d cells, %d bonds, sieve size %.4g mm, "
+                  "volume-equivalent diameter %.4g mm; cells %.4g-%.4g mm (volume-equivalent), %.3g-%.3g CSS",
+                  c.name.c_str(), 1e3 * lo, 1e3 * hi, c.rock_case.string().c_str(), rock.mesh.nCells(),
+                  rock.mesh.nBonds(), 1e3 * rock.sieve_size, 1e3 * rock.equivalent_diameter, 1e3 * small,
+                  1e3 * large, small / css, large / css);
+    return buffer;
+}
+
 void CrusherRun::printSetup() const
 {
-    const FeedRockTemplate& rock = factory->rock();
     const FeedSpec& f = loading.feed;
     const MachineSpec& m = loading.machine;
     std::printf(
@@ -453,21 +497,21 @@ void CrusherRun::printSetup() const
         180.0 / 3.14159265358979323846 * m.kinematics.eccentric_angle,
         m.kinematics.eccentric_speed * 60.0 / (2 * 3.14159265358979323846), spinText(loading.spin).c_str(),
         1e3 * m.closed_side_setting, m.discharge_level);
-    std::printf(
-        "Feed rock %s: %d cells, %d bonds, sieve size %.4g mm, volume-equivalent diameter %.4g mm; "
-        "sizes %.4g-%.4g mm at %.4g kg/s (at most %.4g kg)\n",
-        f.rock_case.string().c_str(), rock.mesh.nCells(), rock.mesh.nBonds(), 1e3 * rock.sieve_size,
-        1e3 * rock.equivalent_diameter, 1e3 * f.size_min, 1e3 * f.size_max, f.mass_rate, f.total_mass);
+    std::printf("Feed: sizes %.4g-%.4g mm at %.4g kg/s (at most %.4g kg) in %d size class%s\n",
+                1e3 * f.size_min, 1e3 * f.size_max, f.mass_rate, f.total_mass, factory->classes(),
+                factory->classes() == 1 ? "" : "es");
+    for (int i = 0; i < factory->classes(); ++i) std::printf("%s\n", feedClassLine(i).c_str());
     if (loading.choke.enabled)
         std::printf("Choke plane at z = %.4g m until t = %.4g s\n", loading.choke.level,
                     loading.choke.duration);
     std::printf("Destructor below z = %.4g m, checked every %ld steps\n", loading.destructor.below,
                 loading.destructor.interval);
     std::printf(
-        "Time step %.4g s = %.3g x stable step %.4g s of the smallest rock (Rayleigh %.4g s); end time "
+        "Time step %.4g s = %.3g x stable step %.4g s of the smallest rock%s (Rayleigh %.4g s); end time "
         "%.4g s (%ld steps)\n",
-        runTime.deltaT(), runTime.deltaT() / critical.value, critical.value, rayleighStep, runTime.endTime(),
-        runTime.endStep());
+        runTime.deltaT(), runTime.deltaT() / critical.value, critical.value,
+        factory->classes() == 1 ? "" : (" of class " + f.classes[stepClass].name).c_str(), rayleighStep,
+        runTime.endTime(), runTime.endStep());
 }
 
 void CrusherRun::report(bool)
@@ -479,6 +523,11 @@ void CrusherRun::report(bool)
         "Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg); %d rocks fed, %d "
         "fragments discharged\n",
         fed, inside, massDischarged, fed - inside - massDischarged, factory->rocksFed(), fragmentsDischarged);
+    std::string byClass;
+    for (int i = 0; i < factory->classes(); ++i)
+        byClass +=
+            (i ? ", " : "") + loading.feed.classes[i].name + " " + std::to_string(factory->rocksFed(i));
+    std::printf("Rocks fed by size class: %s\n", byClass.c_str());
     const DemEnergies& e = model->energies();
     std::printf(
         "Energy: mantle work %.5g J, gravity work %.5g J = kinetic %.5g + stored %.5g + dissipated %.5g "

@@ -1,6 +1,9 @@
 #include "crusher/feedRock.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/counterRandom.hpp"
 #include "core/error.hpp"
@@ -88,30 +91,45 @@ Quat randomOrientation(std::uint64_t seed, std::uint64_t stream, std::uint64_t f
 
 namespace rockfrac {
 
-FeedFactory::FeedFactory(const FeedSpec& spec, FeedRockTemplate rock) : spec_(spec), rock_(std::move(rock)) {}
-
-VoronoiMesh FeedFactory::smallestRock() const
+FeedFactory::FeedFactory(const FeedSpec& spec, std::vector<FeedRockTemplate> rocks)
+    : spec_(spec), rocks_(std::move(rocks)), rocks_fed_by_class_(rocks_.size(), 0)
 {
-    return scaleVoronoiMesh(rock_.mesh, spec_.size_min / rock_.sieve_size, {});
+    const std::size_t classes = std::max<std::size_t>(1, spec_.classes.size());
+    if (rocks_.size() != classes)
+        throw std::logic_error("FeedFactory: " + std::to_string(rocks_.size()) + " template rocks for " +
+                               std::to_string(classes) + " size classes");
 }
 
-bool FeedFactory::clearOfLiners(const DemModel& model, double s, const Mat3& R, const Vec3& centre) const
+FeedFactory::FeedFactory(const FeedSpec& spec, FeedRockTemplate rock)
+    : FeedFactory(spec, std::vector<FeedRockTemplate>{std::move(rock)})
 {
-    const double margin = spec_.liner_clearance + s * rock_.mesh.dilationRadius;
+}
+
+VoronoiMesh FeedFactory::smallestRock(int feed_class) const
+{
+    const FeedRockTemplate& rock = rocks_[feed_class];
+    return scaleVoronoiMesh(rock.mesh, feedClassSizes(spec_, feed_class).first / rock.sieve_size, {});
+}
+
+bool FeedFactory::clearOfLiners(const DemModel& model, const FeedRockTemplate& rock, double s, const Mat3& R,
+                                const Vec3& centre) const
+{
+    const double margin = spec_.liner_clearance + s * rock.mesh.dilationRadius;
     for (const RevolvedLiner& liner : liners_) {
         const WallState& wall = model.wall(liner.wall);
-        for (const Vec3& v : rock_.mesh.vertices)
+        for (const Vec3& v : rock.mesh.vertices)
             if (linerClearance(liner, wall, centre + R * (s * v)) < margin) return false;
     }
     return true;
 }
 
-bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre)
+bool FeedFactory::place(const DemModel& model, int k, const FeedRockTemplate& rock, double s,
+                        const Quat& orientation, Vec3& centre)
 {
     const CellArrays& cells = model.cells();
-    const double reach = s * rock_.reach;
+    const double reach = s * rock.reach;
     const Mat3 R = rotationMatrix(orientation);
-    std::vector<Vec3> cellCentre(rock_.mesh.nCells());
+    std::vector<Vec3> cellCentre(rock.mesh.nCells());
     for (long a = attempts_spent_; a < attempts_spent_ + spec_.attempts; ++a) {
         const std::uint64_t first = 4 + 3 * static_cast<std::uint64_t>(a);
         const double z = spec_.z_min + (spec_.z_max - spec_.z_min) * uniform01(spec_.seed, k, first);
@@ -120,19 +138,19 @@ bool FeedFactory::place(const DemModel& model, int k, double s, const Quat& orie
             (spec_.r_max * spec_.r_max - spec_.r_min * spec_.r_min) * uniform01(spec_.seed, k, first + 1);
         const double phi = 2.0 * pi * uniform01(spec_.seed, k, first + 2);
         centre = {std::sqrt(r2) * std::cos(phi), std::sqrt(r2) * std::sin(phi), z};
-        for (int i = 0; i < rock_.mesh.nCells(); ++i)
-            cellCentre[i] = centre + R * (s * rock_.mesh.centroids[i]);
+        for (int i = 0; i < rock.mesh.nCells(); ++i)
+            cellCentre[i] = centre + R * (s * rock.mesh.centroids[i]);
         // Cell spheres against cell spheres, after the rock's sphere as a quick filter.
         bool clear = true;
         for (int c = 0; c < cells.size() && clear; ++c) {
             const double gap = reach + cells.bounding_radius[c];
             if (norm2(cells.position[c] - centre) > gap * gap) continue;
-            for (int i = 0; i < rock_.mesh.nCells() && clear; ++i) {
-                const double g = s * rock_.cell_reach[i] + cells.bounding_radius[c];
+            for (int i = 0; i < rock.mesh.nCells() && clear; ++i) {
+                const double g = s * rock.cell_reach[i] + cells.bounding_radius[c];
                 clear = norm2(cells.position[c] - cellCentre[i]) > g * g;
             }
         }
-        if (clear && clearOfLiners(model, s, R, centre)) {
+        if (clear && clearOfLiners(model, rock, s, R, centre)) {
             attempts_spent_ = 0;
             return true;
         }
@@ -155,14 +173,17 @@ std::vector<InsertedRock> FeedFactory::feed(DemModel& model, double time)
         const int k = rocks_fed_;
         const double u = uniform01(spec_.seed, k, 0);
         const double size = spec_.size_min + (spec_.size_max - spec_.size_min) * u;
-        const double s = size / rock_.sieve_size;
+        const int feed_class = feedClassOf(spec_, size);
+        const FeedRockTemplate& from = rocks_[feed_class];
+        const double s = size / from.sieve_size;
         const Quat orientation = randomOrientation(spec_.seed, k, 1);
         Vec3 centre;
-        if (!place(model, k, s, orientation, centre)) break;
+        if (!place(model, k, from, s, orientation, centre)) break;
         InsertedRock rock;
         rock.index = k;
+        rock.feed_class = feed_class;
         rock.size = size;
-        rock.mesh = scaleVoronoiMesh(rock_.mesh, s, {});
+        rock.mesh = scaleVoronoiMesh(from.mesh, s, {});
         rock.pose.translation = centre;
         rock.pose.orientation = orientation;
         rock.pose.velocity = spec_.velocity;
@@ -170,6 +191,7 @@ std::vector<InsertedRock> FeedFactory::feed(DemModel& model, double time)
         for (int c = rock.first_cell; c < model.cells().size(); ++c) rock.mass += model.cells().mass[c];
         mass_fed_ += rock.mass;
         ++rocks_fed_;
+        ++rocks_fed_by_class_[feed_class];
         inserted.push_back(std::move(rock));
     }
     return inserted;

@@ -1,6 +1,6 @@
 #pragma once
-// The feed of a crusher: copies of one bonded Voronoi rock (a voronoiMesh case),
-// scaled to a drawn size, turned to a random orientation (docs/theory-crusher.md).
+// The feed of a crusher: copies of a bonded Voronoi rock (a voronoiMesh case, one per size
+// class), scaled to a drawn size, turned to a random orientation (docs/theory-crusher.md).
 //
 //   FeedRockTemplate rock = makeFeedRockTemplate(readVoronoiMesh("feedRock"), density);
 //   VoronoiMesh big = scaleVoronoiMesh(rock.mesh, 0.075 / rock.sieve_size, {});
@@ -44,6 +44,7 @@ Quat randomOrientation(std::uint64_t seed, std::uint64_t stream, std::uint64_t f
 // One rock put into the model by the factory.
 struct InsertedRock {
     int index = 0;       // rock number (its random stream)
+    int feed_class = 0;  // its size class (FeedSpec::classes), whose template it copies
     int first_cell = 0;  // model cells [first_cell, first_cell + mesh.nCells())
     double size = 0.0;   // drawn sieve size [m]
     double mass = 0.0;   // sum of the new cells' masses in the model [kg]
@@ -53,7 +54,8 @@ struct InsertedRock {
 
 // The feed factory: at each call, rocks are inserted until the fed mass reaches
 // mass_rate * t (and at most total_mass), each rock k drawn from its own stream k of
-// the counter-based generator under the case seed: size (draw 0), orientation
+// the counter-based generator under the case seed: size (draw 0, which chooses the size
+// class and so the template, feedClassOf), orientation
 // (draws 1-3), then per placement attempt a (draws 4 + 3a ..): height, radius and
 // azimuth in the feed region. A position is accepted when the bounding sphere of each of
 // the rock's cells clears every cell's bounding sphere in the model and, with liners given
@@ -64,6 +66,8 @@ struct InsertedRock {
 // and the rocks after it wait with it.
 class FeedFactory {
 public:
+    // One template per class of spec.classes, in their order (one template without classes).
+    FeedFactory(const FeedSpec& spec, std::vector<FeedRockTemplate> rocks);
     FeedFactory(const FeedSpec& spec, FeedRockTemplate rock);
     // The liners a rock must clear (the crusher's mantle and concave); none: not checked.
     void setLiners(std::vector<RevolvedLiner> liners) { liners_ = std::move(liners); }
@@ -72,19 +76,24 @@ public:
     bool feeds(double time) const;
     double massFed() const { return mass_fed_; }
     int rocksFed() const { return rocks_fed_; }
-    const FeedRockTemplate& rock() const { return rock_; }
-    // The rock scaled to the smallest size of the range (for the time step).
-    VoronoiMesh smallestRock() const;
+    int rocksFed(int feed_class) const { return rocks_fed_by_class_[feed_class]; }
+    int classes() const { return static_cast<int>(rocks_.size()); }
+    const FeedRockTemplate& rock(int feed_class = 0) const { return rocks_[feed_class]; }
+    // The template of a class scaled to the smallest size of the class (for the time step).
+    VoronoiMesh smallestRock(int feed_class = 0) const;
 
 private:
-    bool place(const DemModel& model, int k, double s, const Quat& orientation, Vec3& centre);
-    bool clearOfLiners(const DemModel& model, double s, const Mat3& R, const Vec3& centre) const;
+    bool place(const DemModel& model, int k, const FeedRockTemplate& rock, double s, const Quat& orientation,
+               Vec3& centre);
+    bool clearOfLiners(const DemModel& model, const FeedRockTemplate& rock, double s, const Mat3& R,
+                       const Vec3& centre) const;
 
     FeedSpec spec_;
-    FeedRockTemplate rock_;
+    std::vector<FeedRockTemplate> rocks_;
     std::vector<RevolvedLiner> liners_;
     double mass_fed_ = 0.0;
     int rocks_fed_ = 0;
+    std::vector<int> rocks_fed_by_class_;
     long attempts_spent_ = 0;  // placement draws already used by the waiting rock rocks_fed_
 };
 

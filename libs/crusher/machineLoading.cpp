@@ -1,5 +1,6 @@
 #include "crusher/machineLoading.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/dictionary.hpp"
@@ -70,17 +71,108 @@ void readMachine(const Dictionary& d, const fs::path& caseDir, MachineSpec& m, M
                         "about the axis of its mean position");
 }
 
-void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
+// The template rock of a class, which must be meshed; `entry` names it in messages.
+fs::path meshedRock(const Dictionary& d, const std::string& key, const std::string& entry,
+                    const fs::path& caseDir)
 {
-    checkKnownEntries(d, {"rock", "sizeRange", "massRate", "totalMass", "region", "velocity", "attempts",
-                          "linerClearance", "interval", "seed"});
-    checkKnownSubEntries(d, "region", {"zRange", "rRange"});
-    f.rock_case = casePath(caseDir, d.get<std::string>("rock"));
-    if (!fs::exists(f.rock_case / "constant/voronoiMesh/meshInfo"))
-        throw UserError(d.fileName() + ": feed/rock: " + (f.rock_case / "constant/voronoiMesh").string() +
+    const fs::path rock = casePath(caseDir, d.get<std::string>(key));
+    if (!fs::exists(rock / "constant/voronoiMesh/meshInfo"))
+        throw UserError(d.location(key).str() + ": " + entry + ": " +
+                        (rock / "constant/voronoiMesh").string() +
                         " is missing; mesh the feed rock (meshRock, voronoiMesh) first");
+    return rock;
+}
+
+// feed/classes: one sub-dictionary { rock "<case>"; upTo <m>; } per class, by increasing upTo.
+std::vector<FeedClass> readFeedClasses(const Dictionary& feed, const fs::path& caseDir, double size_min,
+                                       double size_max)
+{
+    const Dictionary& d = feed.subDict("classes");
+    std::vector<FeedClass> classes;
+    for (const Entry& e : d.entries()) {
+        const std::string entry = "feed/classes/" + e.keyword;
+        if (!e.isDict())
+            throw UserError(e.keywordLocation.str() + ": " + entry +
+                            " must be a sub-dictionary { rock \"<case>\"; upTo <m>; }");
+        checkKnownEntries(*e.dict, {"rock", "upTo"});
+        FeedClass c;
+        c.name = e.keyword;
+        c.rock_case = meshedRock(*e.dict, "rock", entry + "/rock", caseDir);
+        c.up_to = e.dict->getScalar("upTo", Bounds::positive());
+        const std::string at =
+            e.dict->location("upTo").str() + ": " + entry + "/upTo " + formatNumber(c.up_to);
+        if (!classes.empty() && !(c.up_to > classes.back().up_to))
+            throw UserError(at + " is not above the previous class's (" + classes.back().name + ", " +
+                            formatNumber(classes.back().up_to) + "); list the classes by increasing upTo");
+        if (!classes.empty() && !(classes.back().up_to < size_max))
+            throw UserError(at +
+                            ": no rock would be of this class, the previous class already takes every size "
+                            "up to sizeRange max " +
+                            formatNumber(size_max) + "; remove it or lower the previous upTo");
+        if (c.up_to < size_min)
+            throw UserError(at + " is below sizeRange min " + formatNumber(size_min) +
+                            ": no rock would be of this class; remove it or raise its upTo");
+        classes.push_back(std::move(c));
+    }
+    if (classes.empty())
+        throw UserError(feed.location("classes").str() +
+                        ": feed/classes has no class; give one { rock \"<case>\"; upTo <m>; } "
+                        "per size class");
+    const FeedClass& last = classes.back();
+    if (last.up_to < size_max)
+        throw UserError(d.subDict(last.name).location("upTo").str() + ": feed/classes/" + last.name +
+                        "/upTo " + formatNumber(last.up_to) + " is below sizeRange max " +
+                        formatNumber(size_max) +
+                        ": the largest rocks would have no class; raise it to at least the max");
+    return classes;
+}
+
+}  // namespace
+
+int feedClassOf(const FeedSpec& feed, double size)
+{
+    const int n = static_cast<int>(feed.classes.size());
+    for (int i = 0; i + 1 < n; ++i)
+        if (size <= feed.classes[i].up_to) return i;
+    return std::max(0, n - 1);
+}
+
+std::pair<double, double> feedClassSizes(const FeedSpec& feed, int i)
+{
+    if (feed.classes.empty()) return {feed.size_min, feed.size_max};
+    const double lo = i == 0 ? feed.size_min : std::max(feed.size_min, feed.classes[i - 1].up_to);
+    const double hi = i + 1 == static_cast<int>(feed.classes.size())
+                          ? feed.size_max
+                          : std::min(feed.size_max, feed.classes[i].up_to);
+    return {lo, hi};
+}
+
+FeedSpec readFeedSpec(const Dictionary& d, const fs::path& caseDir)
+{
+    checkKnownEntries(d, {"rock", "classes", "sizeRange", "massRate", "totalMass", "region", "velocity",
+                          "attempts", "linerClearance", "interval", "seed"});
+    checkKnownSubEntries(d, "region", {"zRange", "rRange"});
+    FeedSpec f;
     std::tie(f.size_min, f.size_max) = range(d, "sizeRange");
     if (!(f.size_min > 0)) throw UserError(d.fileName() + ": feed/sizeRange must be positive");
+    // One template (rock) or one per size class (classes), never both.
+    if (d.found("rock") && d.found("classes"))
+        throw UserError(d.location("classes").str() +
+                        ": feed has both rock and classes; give either rock (one template for every size) or "
+                        "classes (one template per size class)");
+    if (d.found("rock")) {
+        f.classes.push_back({"rock", meshedRock(d, "rock", "feed/rock", caseDir), f.size_max});
+    } else if (d.found("classes")) {
+        if (!d.isDict("classes"))
+            throw UserError(
+                d.location("classes").str() +
+                ": feed/classes must be a sub-dictionary of classes { rock \"<case>\"; upTo <m>; }");
+        f.classes = readFeedClasses(d, caseDir, f.size_min, f.size_max);
+    } else {
+        throw UserError(d.fileName() +
+                        ": feed has neither rock nor classes; give rock \"<case>\" (one template "
+                        "rock) or classes { <name> { rock \"<case>\"; upTo <m>; } ... }");
+    }
     f.mass_rate = d.getScalar("massRate", Bounds::nonNegative());
     f.total_mass = d.getScalarOrDefault("totalMass", 0.0, Bounds::nonNegative());
     const Dictionary& region = d.subDict("region");
@@ -95,9 +187,8 @@ void readFeed(const Dictionary& d, const fs::path& caseDir, FeedSpec& f)
     f.liner_clearance = d.getScalarOrDefault("linerClearance", 0.0, Bounds::nonNegative());
     f.interval = d.getScalar("interval", Bounds::positive());
     f.seed = static_cast<std::uint64_t>(d.getOrDefault<long>("seed", 1));
+    return f;
 }
-
-}  // namespace
 
 const std::vector<std::string>& machineLoadingEntries()
 {
@@ -112,7 +203,7 @@ MachineLoading readMachineLoading(const Dictionary& d, const fs::path& caseDir)
     checkKnownSubEntries(d, "destructor", {"below", "interval"});
     MachineLoading l;
     readMachine(d.subDict("machine"), caseDir, l.machine, l.spin);
-    readFeed(d.subDict("feed"), caseDir, l.feed);
+    l.feed = readFeedSpec(d.subDict("feed"), caseDir);
     if (d.found("choke")) {
         const Dictionary& c = d.subDict("choke");
         l.choke.enabled = true;

@@ -5,7 +5,8 @@
 # Bases (runCatalogue.sh, prepareBases): disc (pristine BDT granite tutorial),
 # meshed (after meshRock), dem (after voronoiMesh, 60 cells), demRun (after a
 # 20-step bondedDemFoam run), fem (BDT graniteFEM after meshRock), femNoMesh,
-# empty, lab (measurements + a plateForce.dat), crusher (CH660 geometry).
+# empty, lab (measurements + a plateForce.dat), crusher (CH660 geometry), crusherFeed (CH660
+# tiny after meshCrusher, its feedRock meshed and copied to feedRockB).
 
 # A meshRockDict that reads constant/triSurface/rock.stl.
 stlDict='mkdir -p constant/triSurface; cat > system/meshRockDict <<D
@@ -362,6 +363,40 @@ badCase psdNoSuchTime demRun "7" "" fragmentPSD -case . -time 7 <<'SETUP'
 SETUP
 badCase crusherNoDict crusher "meshCrusherDict" "" meshCrusher -case . <<'SETUP'
 rm system/meshCrusherDict
+SETUP
+# The crusher's feed: one template (rock) or one per size class (classes), never both nor neither;
+# classes by increasing upTo, each taking some sizes, the last reaching sizeRange max, all meshed.
+# feedClasses '<classes>': CH660 tiny's `rock "feedRock";` replaced by `classes { <classes> }`.
+feedClasses() { sed -i "s|^ *rock  *\"feedRock\";.*|    classes { $1 }|" constant/loading; }
+badCase feedRockAndClasses crusherFeed "loading" "feed has both rock and classes" bondedDemFoam -case . -dry-run <<'SETUP'
+sed -i 's|^ *rock  *"feedRock";.*|&\n    classes { small { rock "feedRock"; upTo 0.018; } }|' constant/loading
+SETUP
+badCase feedNoRock crusherFeed "loading" "feed has neither rock nor classes" bondedDemFoam -case . -dry-run <<'SETUP'
+sed -i '/^ *rock  *"feedRock";/d' constant/loading
+SETUP
+badCase feedClassesEmpty crusherFeed "loading" "feed/classes has no class" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses ''
+SETUP
+badCase feedClassesNotDict crusherFeed "loading" "feed/classes must be a sub-dictionary" bondedDemFoam -case . -dry-run <<'SETUP'
+sed -i 's|^ *rock  *"feedRock";.*|    classes 0.018;|' constant/loading
+SETUP
+badCase feedClassNotDict crusherFeed "loading" "feed/classes/small must be a sub-dictionary" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small "feedRock";'
+SETUP
+badCase feedClassesUnsorted crusherFeed "loading" "feed/classes/large/upTo 0.015 is not above" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small { rock "feedRock"; upTo 0.016; } large { rock "feedRockB"; upTo 0.015; }'
+SETUP
+badCase feedClassesShort crusherFeed "loading" "feed/classes/large/upTo 0.017 is below sizeRange max" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small { rock "feedRock"; upTo 0.016; } large { rock "feedRockB"; upTo 0.017; }'
+SETUP
+badCase feedClassBelowMin crusherFeed "loading" "feed/classes/small/upTo 0.012 is below sizeRange min" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small { rock "feedRock"; upTo 0.012; } large { rock "feedRockB"; upTo 0.018; }'
+SETUP
+badCase feedClassNeverUsed crusherFeed "loading" "feed/classes/large/upTo 0.02: no rock would be" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small { rock "feedRock"; upTo 0.018; } large { rock "feedRockB"; upTo 0.02; }'
+SETUP
+badCase feedClassNotMeshed crusherFeed "loading" "feed/classes/large/rock" bondedDemFoam -case . -dry-run <<'SETUP'
+feedClasses 'small { rock "feedRock"; upTo 0.016; } large { rock "feedRockC"; upTo 0.018; }'
 SETUP
 badCase renderNoFile dem "VTK/none.vtu" "" renderVtk -case . VTK/none.vtu <<'SETUP'
 SETUP

@@ -39,6 +39,11 @@ prepareBases()
     cp "$src/cases/experiments/BDT/granite/measurements" "$bases/lab/measurements"
     cp "$bases/demRun/postProcessing/plateForce/0/plateForce.dat" "$bases/lab/plateForce.dat"
     cp -r "$src/tutorials/CH660/geometry" "$bases/crusher"
+    copyTutorial tutorials/CH660/tiny "$bases/crusherFeed"          # liners and feed rocks meshed
+    quiet meshCrusher -case "$bases/crusherFeed"
+    quiet meshRock -case "$bases/crusherFeed/feedRock"
+    quiet voronoiMesh -case "$bases/crusherFeed/feedRock"
+    cp -r "$bases/crusherFeed/feedRock" "$bases/crusherFeed/feedRockB"
 }
 
 # ---- One case ------------------------------------------------------------------
