@@ -537,12 +537,7 @@ void CrusherRun::report(bool)
     std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
     std::printf("Throughput of the solver: %.4g cell-steps/s (%.4g cell-steps in %.4g s wall)\n",
                 cellSteps / std::max(seconds, 1e-9), cellSteps, seconds);
-    if (decomposer)
-        std::printf(
-            "Parallel: the cells were cut anew %ld times (feed, discharge, moves, balance; %.3g s, %.4g MB "
-            "of whole states gathered on rank 0)\n",
-            decomposer->redistributions(), decomposer->redistributionSeconds(),
-            1e-6 * decomposer->redistributionBytes());
+    if (decomposer) std::printf("%s (feed, discharge, moves, balance)\n", describeCuts(*decomposer).c_str());
 }
 
 }  // namespace

@@ -389,15 +389,21 @@ void BondedDemRun::report(bool)
         e.externalWork(), e.kinetic(), e.stored(), e.dissipated(), e.fracture,
         e.balance() - model->initialBalance());
     std::printf("%s\n", stepCheckSummary(model->counters()).c_str());
-    if (decomposer)
-        std::printf(
-            "Parallel: the cells were cut anew %ld times (%.3g s, %.4g MB of whole states gathered on rank "
-            "0)\n",
-            decomposer->redistributions(), decomposer->redistributionSeconds(),
-            1e-6 * decomposer->redistributionBytes());
+    if (decomposer) std::printf("%s\n", describeCuts(*decomposer).c_str());
 }
 
 }  // namespace
+
+std::string describeCuts(const DemDecomposer& d)
+{
+    char line[300];
+    std::snprintf(line, sizeof(line),
+                  "Parallel: the cells were cut anew %ld times; %ld gathers of the whole state on every rank "
+                  "(%.4g MB received by rank 0), %.3g s with the cuts on rank 0",
+                  d.redistributions(), d.wholeGathers(), 1e-6 * d.redistributionBytes(),
+                  d.redistributionSeconds());
+    return line;
+}
 
 void redistributeWhenDue(DemDecomposer& decomposer, DemModel& local, long step)
 {

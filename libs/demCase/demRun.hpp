@@ -44,9 +44,13 @@ public:
     virtual std::string redistributionDue() const = 0;
     virtual long redistributions() const = 0;          // so far
     virtual double redistributionSeconds() const = 0;  // their wall time so far (gathers included)
-    virtual double redistributionBytes() const = 0;    // the whole states gathered for them so far
+    virtual double redistributionBytes() const = 0;    // the whole states gathered on every rank so far
+    virtual long wholeGathers() const = 0;             // how many (a feed event that placed nothing too)
     virtual std::string describe() const = 0;          // the log's line, after decompose
 };
+
+// The log's line on a decomposed run's cuts and gathers so far.
+std::string describeCuts(const DemDecomposer& decomposer);
 
 // After a step of a decomposed run: when the decomposer says a redistribution is due, the
 // cells are cut anew and the log says why (collective).

@@ -82,6 +82,7 @@ public:
     {
         const auto start = std::chrono::steady_clock::now();
         bytes_ += static_cast<double>(mpi::gatherModel(local, *exchange_, whole_.get(), true));
+        ++gathers_;
         seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return *whole_;
     }
@@ -97,6 +98,7 @@ public:
     long redistributions() const override { return redistributions_; }
     double redistributionSeconds() const override { return seconds_; }
     double redistributionBytes() const override { return bytes_; }
+    long wholeGathers() const override { return gathers_; }
     bool writes() const override { return mpi::rank(MPI_COMM_WORLD) == 0; }
     bool anyRank(bool mine) override { return exchange_->anyRank(mine); }
     std::string describe() const override
@@ -109,7 +111,7 @@ private:
     std::unique_ptr<mpi::MpiDemExchange> exchange_;
     std::unique_ptr<DemModel> whole_;  // the whole model, gathered into at write times (rank 0) and
                                        // before a redistribution (every rank)
-    long redistributions_ = 0;
+    long redistributions_ = 0, gathers_ = 0;
     double seconds_ = 0.0, bytes_ = 0.0;
 };
 
