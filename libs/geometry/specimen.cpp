@@ -1,6 +1,8 @@
 #include "geometry/specimen.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "core/atomicFile.hpp"
@@ -8,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/knownEntries.hpp"
 #include "core/selector.hpp"
+#include "geometry/surfaceTopology.hpp"
 #include "io/foamFile.hpp"
 
 namespace rockfrac {
@@ -164,6 +167,35 @@ Specimen buildDisc(const Dictionary& d)
     return s;
 }
 
+// A closed scan must be one shell...
+void checkOneShell(const TriSurface& scan, const fs::path& file)
+{
+    const std::vector<std::vector<int>> shells = surfaceShells(scan);
+    if (shells.size() > 1)
+        throw UserError(file.string() + ": the scan has " + std::to_string(shells.size()) +
+                        " separate closed surfaces (shells: " + std::to_string(shells[0].size()) +
+                        " triangles, " + std::to_string(shells[1].size()) +
+                        (shells.size() > 2 ? ", ..." : "") +
+                        "); a specimen is one rock: keep its shell only (e.g. MeshLab's Remove Isolated "
+                        "pieces) and export it again");
+}
+
+// ... that does not cross itself (a scan enclosing a volume; in metres, placed).
+void checkNotCrossing(const TriSurface& scan, const fs::path& file)
+{
+    const std::vector<std::array<int, 2>> crossing = selfIntersections(scan, 10);
+    if (crossing.empty()) return;
+    const auto& t = scan.triangles[crossing[0][0]];
+    const Vec3 at = (scan.points[t[0]] + scan.points[t[1]] + scan.points[t[2]]) / 3.0;
+    char where[160];
+    std::snprintf(where, sizeof(where), "triangles %d and %d intersect near (%.6g %.6g %.6g) m",
+                  crossing[0][0], crossing[0][1], at.x, at.y, at.z);
+    throw UserError(file.string() + ": the scan crosses itself (" + where +
+                    (crossing.size() > 1 ? "; at least " + std::to_string(crossing.size()) + " pairs" : "") +
+                    "): its inside is not defined; repair the self-intersections (e.g. MeshLab's Select "
+                    "self intersecting faces, then remove and close) and export it again");
+}
+
 Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
 {
     requireKnownEntries(d, {"file", "scale", "rotate", "translate", "placeOnPlate"});
@@ -174,6 +206,7 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
     if (!check.watertight())
         throw UserError(file.string() + ": the scan is not a closed surface (" + check.reason() +
                         "); repair it (e.g. close holes in MeshLab) and export it again");
+    checkOneShell(scan, file);
     const double scale = d.getScalarOrDefault("scale", 1.0, Bounds::positive());
     const Mat3 rotation = rotationFromDegrees(d.getOrDefault<Vec3>("rotate", Vec3{}));
     const Vec3 translation = d.getOrDefault<Vec3>("translate", Vec3{});
@@ -189,6 +222,7 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
         throw UserError(file.string() +
                         ": the scan encloses a negative volume (inward-facing triangles); "
                         "flip its normals and export it again");
+    checkNotCrossing(scan, file);
     Specimen s = fromHull(convexHull(scan.points), "stl");
     s.scan = std::move(scan);
     if (d.getOrDefault<bool>("placeOnPlate", false)) placeOnPlate(s.surface, s.scan);

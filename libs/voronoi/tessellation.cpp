@@ -164,6 +164,50 @@ private:
     int wallId_;
 };
 
+// The domain's planes when there are more than Voro++ takes as walls (its max_wall_size is
+// 2048; the hull of a dense scan has thousands of facets): each computed cell is clipped by
+// the planes some vertex of it lies beyond, as the rim facets do, instead of the container
+// cutting it by walls while it is built. The same cell; the order of the cuts differs, so the
+// wall path stays for domains of up to maxPlaneWalls planes (every tutorial's: bit for bit).
+class PlaneClipper {
+public:
+    PlaneClipper(const std::vector<HalfSpace>& planes, const ScaledFrame& frame, int firstWallId)
+        : firstWallId_(firstWallId)
+    {
+        for (const HalfSpace& h : planes)
+            planes_.push_back({h.normal, (h.offset - dot(h.normal, frame.origin)) / frame.scale});
+    }
+
+    // Clip a computed cell (seed at `seed`, scaled frame); false if the cell vanished. A plane
+    // farther from the seed than the cell's farthest vertex cannot cut it.
+    bool clip(voro::voronoicell_neighbor& cell, const Vec3& seed, Scratch& scratch) const
+    {
+        std::vector<double>& relative = scratch.relative;
+        cell.vertices(relative);
+        double reach2 = 0.0;
+        for (std::size_t v = 0; v < relative.size(); v += 3)
+            reach2 = std::max(reach2, relative[v] * relative[v] + relative[v + 1] * relative[v + 1] +
+                                          relative[v + 2] * relative[v + 2]);
+        const double reach = std::sqrt(reach2);
+        for (std::size_t k = 0; k < planes_.size(); ++k) {
+            const Vec3& n = planes_[k].normal;
+            // n.(seed + r) <= c  <=>  n.r <= c - n.seed, which nplane takes doubled.
+            const double limit = planes_[k].offset - dot(n, seed);
+            if (limit >= reach) continue;
+            bool beyond = false;
+            for (std::size_t v = 0; v < relative.size() && !beyond; v += 3)
+                beyond = n.x * relative[v] + n.y * relative[v + 1] + n.z * relative[v + 2] > limit;
+            if (beyond && !cell.nplane(n.x, n.y, n.z, 2.0 * limit, firstWallId_ - static_cast<int>(k)))
+                return false;
+        }
+        return true;
+    }
+
+private:
+    std::vector<HalfSpace> planes_;  // scaled frame
+    int firstWallId_;
+};
+
 // Copy a computed Voro++ cell into metres, faces counter-clockwise seen from
 // outside (Voro++ lists them the other way round), and compute its geometry.
 void extractCell(voro::voronoicell_neighbor& cell, const Vec3& seed, double scale, Scratch& scratch,
@@ -209,7 +253,8 @@ void extractCell(voro::voronoicell_neighbor& cell, const Vec3& seed, double scal
 // its own cell; the container is only read. Results go to the slot of their
 // seed, so the output does not depend on the thread count or schedule.
 std::vector<CellResult> computeCells(voro::container& container, const std::vector<Vec3>& seeds,
-                                     const ScaledFrame& frame, const RimFacets* rim)
+                                     const ScaledFrame& frame, const RimFacets* rim,
+                                     const PlaneClipper* planes)
 {
     std::vector<CellResult> cells(seeds.size());
     const int nx = container.nx, ny = container.ny, nz = container.nz;
@@ -225,8 +270,10 @@ std::vector<CellResult> computeCells(voro::container& container, const std::vect
             const int k = block / (nx * ny), j = (block / nx) % ny, i = block % nx;
             for (int q = 0; q < container.co[block]; ++q) {
                 const int id = container.id[block][q];
+                const Vec3 seed = frame.toScaled(seeds[id]);
                 const bool exists = compute.compute_cell(cell, block, q, i, j, k) &&
-                                    (!rim || rim->clip(cell, frame.toScaled(seeds[id]), scratch));
+                                    (!planes || planes->clip(cell, seed, scratch)) &&
+                                    (!rim || rim->clip(cell, seed, scratch));
                 if (exists) {
                     extractCell(cell, seeds[id], frame.scale, scratch, cells[id]);
                 } else {
@@ -300,7 +347,8 @@ void assemble(const std::vector<CellResult>& cells, VoronoiMesh& mesh)
 
 }  // namespace
 
-VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, double dilationFraction)
+VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, double dilationFraction,
+                       std::size_t maxPlaneWalls)
 {
     checkSeedsInside(domain, seeds);
     if (!(dilationFraction >= 0.0) || !std::isfinite(dilationFraction))
@@ -310,7 +358,14 @@ VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, dou
     const ScaledFrame frame{domain.boundingBox().centre(), std::cbrt(domain.volume() / seeds.size())};
     const int nSeeds = static_cast<int>(seeds.size());
     std::unique_ptr<voro::container> container = makeContainer(domain, frame);
-    const std::vector<std::unique_ptr<voro::wall>> walls = makePlaneWalls(domain, frame);
+    // Up to maxPlaneWalls planes as Voro++ walls, more clipped cell by cell (PlaneClipper).
+    const bool clipPlanes = domain.planes().size() > std::min<std::size_t>(maxPlaneWalls, 2000);
+    std::optional<PlaneClipper> clipper;
+    std::vector<std::unique_ptr<voro::wall>> walls;
+    if (clipPlanes)
+        clipper.emplace(domain.planes(), frame, firstDomainWallId);
+    else
+        walls = makePlaneWalls(domain, frame);
     for (const auto& wall : walls) container->add_wall(*wall);
     for (int i = 0; i < nSeeds; ++i) {
         const Vec3 p = frame.toScaled(seeds[i]);
@@ -323,7 +378,8 @@ VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, dou
     std::optional<RimFacets> rim;
     if (domain.cylinder())
         rim.emplace(*domain.cylinder(), frame, firstDomainWallId - static_cast<int>(domain.planes().size()));
-    assemble(computeCells(*container, seeds, frame, rim ? &*rim : nullptr), mesh);
+    assemble(computeCells(*container, seeds, frame, rim ? &*rim : nullptr, clipper ? &*clipper : nullptr),
+             mesh);
     repairNeighbours(mesh);
     mesh.bonds = bondsForFacePairs(mesh, internalFacePairs(mesh));
     mesh.dilationRadius = dilationFraction * meanCellSize(mesh);

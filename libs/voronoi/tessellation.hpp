@@ -4,6 +4,7 @@
 // each cell's vertices, outward faces, neighbours, volume, centroid and
 // inertia go into the compressed arrays of VoronoiMesh, and every internal
 // face is bonded at its vertices.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -18,7 +19,11 @@ namespace rockfrac {
 // computed in parallel (OpenMP); the result does not depend on the thread
 // count. seed and pruningDistance of the result are left 0: see
 // generateVoronoiMesh.
-VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, double dilationFraction = 0.1);
+// Domains of more than maxPlaneWalls planes (Voro++ takes at most 2048 walls; the default
+// keeps a margin) have their cells clipped by the planes one by one instead: the same cells up to
+// round-off, for any number of planes.
+VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, double dilationFraction = 0.1,
+                       std::size_t maxPlaneWalls = 1000);
 
 // How the cells of a generated mesh are numbered: in the order the seeds were placed
 // (random in space), or along a Morton curve (neighbours close in memory: faster DEM

@@ -113,6 +113,22 @@ badCase stlTruncatedBinary disc "rock.stl" "truncated" meshRock -case . <<SETUP
 $stlDict
 { head -c 80 /dev/zero; printf '\x0c\x00\x00\x00'; head -c 100 /dev/zero; } > constant/triSurface/rock.stl
 SETUP
+# An octahedron of half-diagonal 10 at (dx 0 0): octahedron <dx> [its top vertex "x y z"]
+octahedronFn='octahedron() { local d="$1"; local px="$((d + 10)) 0 0" mx="$((d - 10)) 0 0" py="$d 10 0" my="$d -10 0" pz="${2:-$d 0 10}" mz="$d 0 -10"
+  facet "$px" "$py" "$pz"; facet "$py" "$mx" "$pz"; facet "$mx" "$my" "$pz"; facet "$my" "$px" "$pz"
+  facet "$py" "$px" "$mz"; facet "$mx" "$py" "$mz"; facet "$my" "$mx" "$mz"; facet "$px" "$my" "$mz"; }'
+badCase stlTwoShells disc "rock.stl" "2 separate closed surfaces" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+$octahedronFn
+{ echo "solid two"; octahedron 0; octahedron 40; echo "endsolid two"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlCrossesItself disc "rock.stl" "crosses itself" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+$octahedronFn
+{ echo "solid crossing"; octahedron 0 "20 0 -2"; echo "endsolid crossing"; } > constant/triSurface/rock.stl
+SETUP
 badCase stlFourVertices disc "rock.stl" "" meshRock -case . <<SETUP
 $stlDict
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid x\n' > constant/triSurface/rock.stl

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "voronoi/polyhedron.hpp"
+#include "voronoi/seeding.hpp"
 #include "voronoi/tessellation.hpp"
 #include "voronoiTestSupport.hpp"
 
@@ -156,4 +157,48 @@ TEST_CASE("cellOrder morton: the same cells renumbered, neighbours close in inde
     };
     INFO("mean |i - j| over bonds: seeding " << meanIndexGap(seeding) << ", morton " << meanIndexGap(morton));
     CHECK(meanIndexGap(morton) < 0.25 * meanIndexGap(seeding));
+}
+
+namespace {
+
+// A convex polytope close to a sphere of radius r: the tangent planes at n points spread
+// evenly over it (a Fibonacci sphere), the hull of a dense scan in kind.
+Domain tangentSphere(int n, double r)
+{
+    std::vector<HalfSpace> planes;
+    const double golden = tessellationPi * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+        const double z = 1.0 - (2.0 * i + 1.0) / n, rho = std::sqrt(1.0 - z * z);
+        planes.push_back({{rho * std::cos(golden * i), rho * std::sin(golden * i), z}, r});
+    }
+    return Domain::fromPlanes(planes);
+}
+
+}  // namespace
+
+TEST_CASE("a domain of more planes than Voro++ takes as walls: each cell clipped by them",
+          "[voronoi][tessellation]")
+{
+    // 3 000 planes (Voro++'s limit is 2 048 walls): the cells fill the polytope and keep every
+    // invariant; their boundary faces lie on its planes.
+    const Domain many = tangentSphere(3000, 0.02);
+    const VoronoiMesh mesh = generateVoronoiMesh(many, 300, 0.0, 11);
+    CHECK(std::fabs(test::sumOfVolumes(mesh) / many.volume() - 1.0) < 1e-9);
+    checkInvariants(mesh);
+    CHECK(test::checkBoundaryFacesOnPlanes(mesh, many, meanCellSize(mesh)) == "");
+
+    // The clipped cells are the walled cells: 400 planes both ways, cell by cell.
+    const Domain some = tangentSphere(400, 0.02);
+    const std::vector<Vec3> seeds = placeSeeds(some, 200, 0.0, 3);
+    const VoronoiMesh walled = tessellate(some, seeds, 0.1, 1000);
+    const VoronoiMesh clipped = tessellate(some, seeds, 0.1, 100);
+    REQUIRE(walled.nCells() == clipped.nCells());
+    double worst = 0.0;
+    for (int c = 0; c < walled.nCells(); ++c) {
+        worst = std::max(worst, std::fabs(clipped.volumes[c] / walled.volumes[c] - 1.0));
+        CHECK(clipped.cellFaceOffset[c + 1] - clipped.cellFaceOffset[c] ==
+              walled.cellFaceOffset[c + 1] - walled.cellFaceOffset[c]);
+    }
+    CHECK(worst < 1e-10);
+    CHECK(clipped.nBonds() == walled.nBonds());
 }

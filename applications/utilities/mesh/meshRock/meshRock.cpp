@@ -51,6 +51,15 @@ void report(const Specimen& s)
         std::printf("  convex hull: %zu planes, %zu triangles%s\n", s.planes.size(),
                     s.surface.triangles.size(), s.scan ? "" : "");
     if (s.scan) std::printf("  hull/scan volume ratio %.4f\n", s.hullToScanVolume);
+    // Both solvers fill the convex hull (the paper's way): a concave scan gains volume.
+    if (s.scan && s.hullToScanVolume > 1.05)
+        std::printf(
+            "Warning: the convex hull (%.4g mm^3) is %.1f %% larger than the scan (%.4g mm^3): both solvers "
+            "mesh "
+            "the hull, so this rock's concave parts are filled (cells that follow a concave surface are not "
+            "available yet)\n",
+            1e9 * s.properties.volume, 100.0 * (s.hullToScanVolume - 1.0),
+            1e9 * s.properties.volume / s.hullToScanVolume);
 }
 
 TetMeshRequest readTetRequest(const Dictionary& d)

@@ -1,0 +1,21 @@
+#pragma once
+// What a closed triangulated surface must also be to bound one rock: a single shell (one
+// connected closed surface) that does not cross itself. checkSurface (triSurface.hpp) finds
+// holes, non-manifold and misoriented edges; these two need the surface closed first.
+#include <array>
+#include <vector>
+
+#include "geometry/triSurface.hpp"
+
+namespace rockfrac {
+
+// The connected pieces of the surface (triangles joined through shared vertices), each as the
+// indices of its triangles, largest first.
+std::vector<std::vector<int>> surfaceShells(const TriSurface& surface);
+
+// Pairs of triangles that intersect other than along a shared edge or vertex (CGAL's
+// Polygon_mesh_processing::self_intersections), at most `limit` of them. The surface must be
+// closed and manifold (checkSurface(...).watertight()).
+std::vector<std::array<int, 2>> selfIntersections(const TriSurface& surface, std::size_t limit = 10);
+
+}  // namespace rockfrac
