@@ -3,9 +3,9 @@
 // the gyrating mantle and the fixed concave as triangulated walls, the feed factory,
 // the choke plane, the destructor below the discharge (docs/theory-crusher.md).
 //
-// The run is a TimedRun (core/timeLoop.hpp): its step, its rows and its VTK writes; the
-// loop, the write rules and signals are TimeLoop's. It cannot restart (cells are inserted
-// and removed; no state file), so it writes no time directories, only VTK/cells_<step>.vtu.
+// The run is a TimedRun (core/timeLoop.hpp): its step, its rows and its time directories
+// (<time>/demState and <time>/crusherState, crusherState.hpp, and VTK/cells_<step>.vtu); the
+// loop, the write rules, signals and restart are TimeLoop's.
 //
 //   TimeLoop loop(app, {demControlEntries(), {"machine"}});
 //   const std::unique_ptr<TimedRun> run = newCrusherRun(app, loop);  // reads and checks every input
