@@ -14,8 +14,9 @@
 //
 // Writes postProcessing/machine/0/machine.dat (means over each sampling window of the
 // mantle force, torque about the pivot and power; masses inside, fed and discharged,
-// energies), postProcessing/discharge/0/discharge.dat (one row per fragment that left)
-// and VTK/cells_<step>.vtu.
+// energies), postProcessing/discharge/0/discharge.dat (one row per fragment that left),
+// <time>/demState and <time>/crusherState at write times and at a signal (not at step 0: a
+// fresh start needs none), and VTK/cells_<step>.vtu. Both series continue from a restart's time.
 #include <memory>
 
 #include "core/application.hpp"
