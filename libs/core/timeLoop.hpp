@@ -70,7 +70,7 @@ public:
     TimedRun& operator=(const TimedRun&) = delete;
 
     virtual void printSetup() const = 0;
-    // A run that writes no restartable state (the crusher) is refused a restart, and its
+    // A run that writes no restartable state is refused a restart, and its
     // interruption and failure messages name no time directory.
     virtual bool canRestart() const { return true; }
 

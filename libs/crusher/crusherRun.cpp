@@ -7,6 +7,7 @@
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "core/memoryLimit.hpp"
+#include "crusher/crusherState.hpp"
 #include "crusher/destructor.hpp"
 #include "crusher/feedRock.hpp"
 #include "crusher/machineLoading.hpp"
@@ -30,54 +31,6 @@ WallMotion wallMotion(const MantlePose& p)
     return {p.translation,
             quatFromRotationVector(p.rotation_vector) * quatFromRotationVector(Vec3{0.0, 0.0, p.spin_angle}),
             p.velocity, p.angular_velocity};
-}
-
-// Shapes of the inserted cells for VTK (body-frame polyhedra), kept in step with the model.
-void appendShapes(CellShapes& s, const InsertedRock& rock, const DemModel& model)
-{
-    if (s.cellVertexOffset.empty()) s.cellVertexOffset.assign(1, 0);
-    if (s.cellFaceOffset.empty()) s.cellFaceOffset.assign(1, 0);
-    if (s.faceVertexOffset.empty()) s.faceVertexOffset.assign(1, 0);
-    const VoronoiMesh& m = rock.mesh;
-    const Mat3 pose = rotationMatrix(rock.pose.orientation);
-    const CellArrays& cells = model.cells();
-    for (int local = 0; local < m.nCells(); ++local) {
-        const int c = rock.first_cell + local;
-        const Mat3 R = rotationMatrix(cells.orientation[c]);
-        const int vertex_base = s.cellVertexOffset.back();
-        for (int v = m.cellVertexOffset[local]; v < m.cellVertexOffset[local + 1]; ++v)
-            s.bodyVertices.push_back(
-                transposeTimes(R, rock.pose.translation + pose * m.vertices[v] - cells.position[c]));
-        s.cellVertexOffset.push_back(static_cast<int>(s.bodyVertices.size()));
-        for (int f = m.cellFaceOffset[local]; f < m.cellFaceOffset[local + 1]; ++f) {
-            for (int k = m.faceVertexOffset[f]; k < m.faceVertexOffset[f + 1]; ++k)
-                s.faceVertices.push_back(vertex_base + m.faceVertices[k]);
-            s.faceVertexOffset.push_back(static_cast<int>(s.faceVertices.size()));
-        }
-        s.cellFaceOffset.push_back(static_cast<int>(s.faceVertexOffset.size()) - 1);
-    }
-}
-
-void compactShapes(CellShapes& s, const std::vector<int>& new_index)
-{
-    CellShapes out;
-    out.cellVertexOffset.assign(1, 0);
-    out.cellFaceOffset.assign(1, 0);
-    out.faceVertexOffset.assign(1, 0);
-    for (std::size_t c = 0; c < new_index.size(); ++c) {
-        if (new_index[c] < 0) continue;
-        const int old_base = s.cellVertexOffset[c], new_base = out.cellVertexOffset.back();
-        out.bodyVertices.insert(out.bodyVertices.end(), s.bodyVertices.begin() + old_base,
-                                s.bodyVertices.begin() + s.cellVertexOffset[c + 1]);
-        out.cellVertexOffset.push_back(static_cast<int>(out.bodyVertices.size()));
-        for (int f = s.cellFaceOffset[c]; f < s.cellFaceOffset[c + 1]; ++f) {
-            for (int k = s.faceVertexOffset[f]; k < s.faceVertexOffset[f + 1]; ++k)
-                out.faceVertices.push_back(s.faceVertices[k] - old_base + new_base);
-            out.faceVertexOffset.push_back(static_cast<int>(out.faceVertices.size()));
-        }
-        out.cellFaceOffset.push_back(static_cast<int>(out.faceVertexOffset.size()) - 1);
-    }
-    s = std::move(out);
 }
 
 // The liner as a wall of the model, and its profile for the feed (linerClearance.hpp).
@@ -126,8 +79,6 @@ class CrusherRun final : public TimedRun {
 public:
     CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* decomposer);
     void printSetup() const override;
-    // Cells are inserted and removed: no state file to continue from.
-    bool canRestart() const override { return false; }
     long start(bool restarted) override;
     Sampling sampling() const override { return {sampleInterval, Sampling::Rows::windowMeans}; }
     void beforeStep(long step) override;
@@ -140,7 +91,7 @@ public:
     }
     // The ranks of a decomposed run stop together, at the first step a signal reached one.
     bool interruptedEverywhere(bool here) override { return decomposer ? decomposer->anyRank(here) : here; }
-    void writeTime(long step) override { writeVtk(step); }
+    void writeTime(long step) override;
     std::string writeFailure(long step) override;
     double time() const override { return model->time(); }
     std::string progress() const override;
@@ -169,6 +120,11 @@ private:
     CriticalTimeStep critical;
     int stepClass = 0;  // the feed class whose smallest rock sets the stable step
 
+    // Restart (crusherState.hpp): every rock fed and the origin of each cell.
+    FeedRecord fed;
+    bool restarted = false;
+    long restartStep = 0;  // the step the state of a restart records
+
     // Bookkeeping. The cells inside and their mass change only when cells are fed or
     // discharged: counted then, over the whole model in its order.
     int cellsInside = 0;
@@ -193,6 +149,8 @@ private:
     std::vector<double> machineRow();
     void writeVtk(long step);
     void discharge();
+    CrusherState state(long step, const DemModel& whole) const;
+    void restoreState();
 };
 
 CrusherRun::CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
@@ -247,6 +205,7 @@ CrusherRun::CrusherRun(const Application& a, TimeLoop& loop, DemDecomposer* d)
     model->setStepLimit(runTime.deltaT() / critical.value, critical.bond_frequency,
                         critical.bond_damping_ratio);
     sampleInterval = readSampleInterval(controlDict, "machine", sampleInterval);
+    if (runTime.restarting()) restoreState();
 }
 
 void CrusherRun::countInside(const DemModel& whole)
@@ -310,7 +269,104 @@ void CrusherRun::writeVtk(long step)
     if (cellsInside == 0) return;
     backend->download();
     const DemModel* whole = decomposer ? decomposer->gather(*model) : model.get();
-    if (writes()) writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, step > 0);
+    if (writes()) writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, restarted || step > 0);
+}
+
+// The state of the whole model and of the run into <time>/ (demState, crusherState), then
+// the frames, then the time directory is published: a run killed before the commit restarts
+// from the previous time, which writes these frames again. The initial state (step 0, the
+// empty machine or the first feed) is a fresh start: no state, only its frame.
+void CrusherRun::writeTime(long step)
+{
+    if (step == 0) {
+        writeVtk(step);
+        return;
+    }
+    backend->download();
+    const DemModel* whole = decomposer ? decomposer->gather(*model) : model.get();
+    if (!writes()) return;
+    const fs::path staging = runTime.prepareStagingDir(whole->time());
+    writeDemState(staging / "demState", *whole, step, 0.0, false);
+    writeCrusherState(staging / "crusherState", state(step, *whole));
+    if (cellsInside > 0)
+        writeDemVtk(app.casePath(), static_cast<int>(step), *whole, shapes, restarted || step > 0);
+    runTime.commitTimeDir(whole->time());
+}
+
+CrusherState CrusherRun::state(long step, const DemModel& whole) const
+{
+    CrusherState c;
+    c.step = step;
+    c.time = whole.time();
+    c.fed = fed;
+    c.mass_fed = factory->massFed();
+    c.rocks_fed = factory->rocksFed();
+    c.rocks_fed_by_class = factory->rocksFedByClass();
+    c.attempts_spent = factory->attemptsSpent();
+    c.mass_discharged = massDischarged;
+    c.fragments_discharged = fragmentsDischarged;
+    for (int k = 0; k < whole.nWalls(); ++k) c.wall_work.push_back(whole.wallWork(k));
+    c.spin_angle = spin.angle();
+    c.spin_rate = spin.rate();
+    c.spin_torque_work = spin.torqueWork();
+    c.spin_bearing_dissipated = spin.bearingDissipated();
+    c.choke_lowered = chokeLowered;
+    c.sum_force = sumForce;
+    c.sum_torque = sumTorque;
+    c.sum_power = sumPower;
+    c.last_power = lastPower;
+    c.sample_steps = sampleSteps;
+    const DemCounters& counters = whole.counters();
+    c.split_steps = counters.split_steps;
+    c.substeps = counters.substeps;
+    c.most_substeps = counters.most_substeps;
+    c.neighbour_rebuilds = counters.neighbour_rebuilds;
+    return c;
+}
+
+// startFrom latestTime: the model built again from the rocks fed (crusherState), its state
+// read into it (demState), then the run's books. The walls' work first: readDemState keeps it,
+// and marks the restored forces valid last (so that the next step continues from them).
+void CrusherRun::restoreState()
+{
+    const fs::path dir = app.path(runTime.startTimeName());
+    const fs::path file = dir / "crusherState";
+    const CrusherState c = readCrusherState(file);
+    rebuildCrusherModel(c.fed, *factory, *model, shapes, file);
+    if (static_cast<int>(c.wall_work.size()) != model->nWalls())
+        throw UserError(file.string() + ": walls.work has " + std::to_string(c.wall_work.size()) +
+                        " walls, the case " + std::to_string(model->nWalls()) +
+                        " (the choke plane on or off?); the state does not belong to this case");
+    for (int k = 0; k < model->nWalls(); ++k) {
+        WallState w = model->wall(k);
+        w.work = c.wall_work[k];
+        model->setWallState(k, w);
+    }
+    const DemRestart r = readDemState(dir / "demState", *model);
+    if (r.step != c.step)
+        throw UserError(file.string() + ": step " + std::to_string(c.step) + ", but demState's is " +
+                        std::to_string(r.step) + "; the two files are of different writes");
+    DemCounters counters = model->counters();
+    counters.split_steps = c.split_steps;
+    counters.substeps = c.substeps;
+    counters.most_substeps = c.most_substeps;
+    counters.neighbour_rebuilds = c.neighbour_rebuilds;
+    model->setCounters(counters);
+    fed = c.fed;
+    factory->restoreCounters(c.mass_fed, c.rocks_fed, c.rocks_fed_by_class, c.attempts_spent, file.string());
+    massDischarged = c.mass_discharged;
+    fragmentsDischarged = c.fragments_discharged;
+    mantleWork = model->wallWork(mantle);
+    spin.restore(c.spin_angle, c.spin_rate, c.spin_torque_work, c.spin_bearing_dissipated);
+    chokeLowered = c.choke_lowered;
+    sumForce = c.sum_force;
+    sumTorque = c.sum_torque;
+    sumPower = c.sum_power;
+    lastPower = c.last_power;
+    sampleSteps = c.sample_steps;
+    countInside(*model);
+    restartStep = r.step;
+    restarted = true;
 }
 
 // ---- the loop's hooks (core/timeLoop.hpp) ----------------------------------------
@@ -329,16 +385,25 @@ long CrusherRun::start(bool)
         std::printf("Backend: cpu (OpenMP)\n");
     }
     wallStart = std::chrono::steady_clock::now();
-    if (!writes()) return 0;
-    machineSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "machine", machineColumns());
+    const long first = restarted ? restartStep : 0;
+    if (!writes()) return first;
+    // A restart continues the series from its time. machine.dat's rows are window means: a
+    // restart within a window drops the row the stopped run wrote for its unfinished rest.
+    const double t = model->time();
+    const double machineFrom = !restarted                    ? -1.0
+                               : first % sampleInterval == 0 ? t
+                                                             : t - 0.5 * runTime.deltaT();
+    machineSeries =
+        std::make_unique<TimeSeriesWriter>(app.casePath(), "machine", machineColumns(), machineFrom);
     dischargeSeries = std::make_unique<TimeSeriesWriter>(app.casePath(), "discharge",
                                                          std::vector<Column>{{"Time", "s"},
                                                                              {"cells", "-"},
                                                                              {"mass", "kg"},
                                                                              {"volume", "m^3"},
                                                                              {"equivalentDiameter", "m"},
-                                                                             {"sieveSize", "m"}});
-    return 0;
+                                                                             {"sieveSize", "m"}},
+                                                         restarted ? t : -1.0);
+    return first;
 }
 
 // Machine state before a step: mantle pose, choke plane, feed; at step 0 also the forces
@@ -362,7 +427,10 @@ void CrusherRun::beforeStep(long step)
         backend->download();  // the factory looks for free space among the current cells
         DemModel& whole = decomposer ? decomposer->gatherEverywhere(*model) : *model;
         const std::vector<InsertedRock> rocks = factory->feed(whole, t);
-        for (const InsertedRock& rock : rocks) appendShapes(shapes, rock, whole);
+        for (const InsertedRock& rock : rocks) {
+            appendShapes(shapes, rock, whole);
+            fed.add(rock);
+        }
         if (!rocks.empty()) {
             countInside(whole);
             if (decomposer) decomposer->redistribute(*model);
@@ -425,6 +493,7 @@ void CrusherRun::discharge()
     if (decomposer) decomposer->redistribute(*model);
     backend->upload();
     compactShapes(shapes, r.new_index);
+    fed.compact(r.new_index);
     massDischarged += r.mass;
     fragmentsDischarged += static_cast<int>(r.fragments.size());
     for (const DischargedFragment& f : r.fragments)
@@ -512,6 +581,9 @@ void CrusherRun::printSetup() const
         runTime.deltaT(), runTime.deltaT() / critical.value, critical.value,
         factory->classes() == 1 ? "" : (" of class " + f.classes[stepClass].name).c_str(), rayleighStep,
         runTime.endTime(), runTime.endStep());
+    if (restarted)
+        std::printf("Restart from time %s (step %ld): %zu rocks fed, %d cells inside\n",
+                    runTime.startTimeName().c_str(), restartStep, fed.rocks.size(), cellsInside);
 }
 
 void CrusherRun::report(bool)

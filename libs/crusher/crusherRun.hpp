@@ -3,9 +3,9 @@
 // the gyrating mantle and the fixed concave as triangulated walls, the feed factory,
 // the choke plane, the destructor below the discharge (docs/theory-crusher.md).
 //
-// The run is a TimedRun (core/timeLoop.hpp): its step, its rows and its VTK writes; the
-// loop, the write rules and signals are TimeLoop's. It cannot restart (cells are inserted
-// and removed; no state file), so it writes no time directories, only VTK/cells_<step>.vtu.
+// The run is a TimedRun (core/timeLoop.hpp): its step, its rows and its time directories
+// (<time>/demState and <time>/crusherState, crusherState.hpp, and VTK/cells_<step>.vtu); the
+// loop, the write rules, signals and restart are TimeLoop's.
 //
 //   TimeLoop loop(app, {demControlEntries(), {"machine"}});
 //   const std::unique_ptr<TimedRun> run = newCrusherRun(app, loop);  // reads and checks every input
@@ -14,8 +14,9 @@
 //
 // Writes postProcessing/machine/0/machine.dat (means over each sampling window of the
 // mantle force, torque about the pivot and power; masses inside, fed and discharged,
-// energies), postProcessing/discharge/0/discharge.dat (one row per fragment that left)
-// and VTK/cells_<step>.vtu.
+// energies), postProcessing/discharge/0/discharge.dat (one row per fragment that left),
+// <time>/demState and <time>/crusherState at write times and at a signal (not at step 0: a
+// fresh start needs none), and VTK/cells_<step>.vtu. Both series continue from a restart's time.
 #include <memory>
 
 #include "core/application.hpp"

@@ -159,6 +159,19 @@ bool FeedFactory::place(const DemModel& model, int k, const FeedRockTemplate& ro
     return false;
 }
 
+void FeedFactory::restoreCounters(double mass_fed, int rocks_fed, const std::vector<int>& rocks_fed_by_class,
+                                  long attempts_spent, const std::string& source)
+{
+    if (rocks_fed_by_class.size() != rocks_.size() || rocks_fed < 0 || attempts_spent < 0)
+        throw UserError(source + ": the feed counters are for " + std::to_string(rocks_fed_by_class.size()) +
+                        " size classes, the case has " + std::to_string(rocks_.size()) +
+                        "; the state does not belong to this case's feed");
+    mass_fed_ = mass_fed;
+    rocks_fed_ = rocks_fed;
+    rocks_fed_by_class_ = rocks_fed_by_class;
+    attempts_spent_ = attempts_spent;
+}
+
 bool FeedFactory::feeds(double time) const
 {
     double target = spec_.mass_rate * time;

@@ -6,6 +6,7 @@
 //   VoronoiMesh big = scaleVoronoiMesh(rock.mesh, 0.075 / rock.sieve_size, {});
 //   model.insertCells(big, {position, randomOrientation(seed, k, 0), velocity, {}});
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "crusher/linerClearance.hpp"
@@ -77,6 +78,14 @@ public:
     double massFed() const { return mass_fed_; }
     int rocksFed() const { return rocks_fed_; }
     int rocksFed(int feed_class) const { return rocks_fed_by_class_[feed_class]; }
+    const std::vector<int>& rocksFedByClass() const { return rocks_fed_by_class_; }
+    // Placement draws already spent on the rock that waits for room (0 when none waits).
+    long attemptsSpent() const { return attempts_spent_; }
+    // A restart (crusherState.hpp): the counters as the state recorded them; the rocks
+    // themselves are put back into the model by the caller. UserError (naming `source`) when
+    // the classes do not match this factory's.
+    void restoreCounters(double mass_fed, int rocks_fed, const std::vector<int>& rocks_fed_by_class,
+                         long attempts_spent, const std::string& source);
     int classes() const { return static_cast<int>(rocks_.size()); }
     const FeedRockTemplate& rock(int feed_class = 0) const { return rocks_[feed_class]; }
     // The template of a class scaled to the smallest size of the class (for the time step).

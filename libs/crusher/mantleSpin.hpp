@@ -43,6 +43,14 @@ public:
     double kineticEnergy() const { return 0.5 * spec_.inertia * rate_ * rate_; }
     double torqueWork() const { return torque_work_; }
     double bearingDissipated() const { return bearing_dissipated_; }
+    // A restart (crusherState.hpp): the state as written.
+    void restore(double angle, double rate, double torque_work, double bearing_dissipated)
+    {
+        angle_ = angle;
+        rate_ = rate;
+        torque_work_ = torque_work;
+        bearing_dissipated_ = bearing_dissipated;
+    }
 
 private:
     MantleSpinSpec spec_;

@@ -11,6 +11,7 @@
 #include "crusher/feedRock.hpp"
 #include "dem/demModel.hpp"
 #include "dem/voronoiQnscBond.hpp"
+#include "funnelFeed.hpp"
 #include "voronoi/tessellation.hpp"
 
 using namespace rockfrac;
@@ -276,18 +277,7 @@ FedRun runFed(int threads, std::uint64_t seed)
     q.youngs_modulus = 4.6e9;  // 10 x softer than granite: a 3 x larger step
     p.bond_law = std::make_shared<VoronoiQnscBondLaw>(q);
     p.rock_youngs_modulus = 7.7e9;
-    FeedSpec spec;
-    spec.size_min = 0.015;
-    spec.size_max = 0.025;
-    spec.mass_rate = 2000.0;  // [kg/s]
-    spec.total_mass = 0.2;
-    spec.z_min = 0.03;
-    spec.z_max = 0.15;
-    spec.r_min = 0.0;
-    spec.r_max = 0.01;
-    spec.velocity = {0.0, 0.0, -15.0};
-    spec.interval = 1e-4;
-    spec.seed = seed;
+    const FeedSpec spec = funnelFeedSpec(seed);
     FeedFactory factory(spec, makeFeedRockTemplate(rockMesh(), p.rock_density));
     DemModel model(p);
     // A funnel of two inclined plates makes the rocks meet before they leave.
