@@ -590,11 +590,12 @@ void CrusherRun::report(bool)
 {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    const double inside = massInside, fed = factory->massFed();
+    const double inside = massInside, massFed = factory->massFed();
     std::printf(
         "Mass: fed %.9g kg = inside %.9g kg + discharged %.9g kg (imbalance %.3g kg); %d rocks fed, %d "
         "fragments discharged\n",
-        fed, inside, massDischarged, fed - inside - massDischarged, factory->rocksFed(), fragmentsDischarged);
+        massFed, inside, massDischarged, massFed - inside - massDischarged, factory->rocksFed(),
+        fragmentsDischarged);
     std::string byClass;
     for (int i = 0; i < factory->classes(); ++i)
         byClass +=

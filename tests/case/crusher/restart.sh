@@ -7,8 +7,9 @@
 # are byte for byte those of the legs (which add one frame, at the signal). The uninterrupted
 # run's state at 30 ms, continued by `mpirun -np 2 bondedDemFoam -parallel`, gives its files too
 # (machine.dat but for the last digits of `exchanged` and `balanceError`, as in
-# case.parallel.ch660Mpi). Small size (the sanitized pass): the first 12.5 ms, legs at 5, 7.5 and
-# 10 ms (fed, nothing discharged; the parallel continuation from 7.5 ms).
+# case.parallel.ch660Mpi). Small size (the sanitized pass): the first 7.5 ms, the signal at the
+# first write (2.5 ms) and legs to 5 and 7.5 ms (fed, nothing nipped or discharged; the parallel
+# continuation from 5 ms).
 source "$(dirname "$0")/../caseTestFunctions"
 if command -v mpirun > /dev/null; then
     source "$(dirname "$0")/../parallel/mpiTestFunctions"  # sameMachine, sameFramesAsSerial
@@ -21,12 +22,12 @@ cd "$work/base"
 run() { "$@" > "log.$1" 2>&1 || fail "$1 failed: $(tail -3 "log.$1")"; }
 run meshCrusher
 (cd feedRock && run meshRock && run voronoiMesh) || fail "the feed rock's mesh"
-endTime=$(bySize 0.055 0.0125)
+endTime=$(bySize 0.055 0.0075)
 caseDict -case . system/controlDict -entry endTime -set "$endTime" > /dev/null
 caseDict -case . system/controlDict -entry writeInterval -set "$(bySize 0.005 0.0025)" > /dev/null
 caseDict -case . system/controlDict -entry startFrom -set latestTime > /dev/null
-legs=$(bySize "0.02 0.03 0.05 0.055" "0.005 0.0075 0.0125")
-parallelFrom=$(bySize 0.03 0.0075)
+legs=$(bySize "0.02 0.03 0.05 0.055" "0.005 0.0075")
+parallelFrom=$(bySize 0.03 0.005)
 
 cp -r "$work/base" "$work/reference"
 (cd "$work/reference" && bondedDemFoam > log 2>&1) || fail "the uninterrupted run failed: $(tail -3 "$work/reference/log")"
