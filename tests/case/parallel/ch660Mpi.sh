@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bondedDemFoam -parallel on the CH660 tiny crusher (three rocks of 30 cells fed beside the
-# mantle, nipped from 17 ms on, one fragment discharged at 40 ms). The feed and the destructor
+# mantle, nipped from 17 ms on, one fragment discharged at 49 ms). The feed and the destructor
 # change the whole model, gathered on every rank, which is then cut anew; so is a model whose
 # cells have moved half the ghost layer's allowance, or whose ranks' costs drift apart
 # (imbalanceTolerance). With 2 ranks, and with 4 ranks (--oversubscribe) re-balancing at every
