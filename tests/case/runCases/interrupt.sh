@@ -28,7 +28,10 @@ runCases -case "$study" > "$work/log.2" &
 pid=$!
 sleep 0.5
 kill -KILL "$pid"; wait "$pid" 2>/dev/null || true
-sleep 1.5                  # let the orphaned members end
+# Let the orphaned members end: they hold the study's lock (inherited) until they do, and a
+# resume is refused while they run (a loaded machine, e.g. the sanitized pass, takes seconds).
+for _ in $(seq 600); do flock -n "$study/members/.runCases.lock" true && break; sleep 0.1; done
+flock -n "$study/members/.runCases.lock" true || fail "the orphaned members still hold the study's lock after 60 s"
 grep -l "state       running" "$study"/members/*/runCases.status > /dev/null || fail "no member left 'running'"
 
 runCases -case "$study" > "$work/log.3" || fail "the resumed batch failed"
