@@ -149,6 +149,7 @@ public:
     void setWallMotion(int wall, const WallMotion& motion);
     int nWalls() const { return static_cast<int>(walls_.size()); }
     const WallState& wall(int w) const { return walls_[w]; }
+    WallPose wallPose(const WallState& wall) const;  // as the contact kernels see it
     Vec3 wallDisplacement(int w) const { return walls_[w].origin - walls_[w].initial_origin; }
     Vec3 wallReaction(int w) const { return walls_[w].reaction; }
     // Torque of the cells' forces on wall w about its origin, and the power the wall
@@ -360,7 +361,6 @@ private:
     GatherArgs gatherArgs();
     IntegrationArgs integrationArgs();
     CellContactView cellView() const;
-    WallPose wallPose(const WallState& wall) const;
 
     DemParameters parameters_;
     ContactConstants rock_rock_, rock_steel_;
@@ -385,6 +385,7 @@ private:
     std::vector<WallState> walls_;
     std::vector<Vec3> triangle_vertices_;           // 3 per triangle, each wall's own frame
     std::vector<std::uint16_t> triangle_features_;  // ridges and convex corners (surfaceFeatures.hpp)
+    std::vector<TrianglePrism> triangle_prisms_;  // distance bounds, each wall's own frame
     std::vector<TriangleGrid> triangle_grids_;      // per wall (empty for plates)
 
     // Per-step caches.

@@ -128,6 +128,7 @@ void DemModel::runContactKernels(double dt)
     wa.walls = wall_poses_.data();
     wa.triangle_vertices = triangle_vertices_.data();
     wa.triangle_features = triangle_features_.data();
+    wa.triangle_prisms = triangle_prisms_.data();
     viewWallItemArrays(wa, wall_items_);
     wa.owned_cell = owned_cell_.empty() ? nullptr : owned_cell_.data();
     parameters_.contact_law->runWalls(wa);

@@ -121,15 +121,31 @@ void DemModel::buildWallItems()
             const WallState& wall = walls_[w];
             const double reach = cells_.bounding_radius[c] + skin_;
             found.clear();
+            Vec3 local;
+            double clearance = 0.0;  // a plate's items are evaluated every step
             if (wall.kind == wallPlate) {
                 if (dot(cells_.position[c] - wall.origin, wall.normal) > reach) continue;
             } else {
-                const Mat3 R = rotationMatrix(wall.orientation);
-                triangle_grids_[w].query(transposeTimes(R, cells_.position[c] - wall.origin), reach, found);
+                local = transposeTimes(rotationMatrix(wall.orientation), cells_.position[c] - wall.origin);
+                triangle_grids_[w].query(local, reach, found);
                 if (found.empty()) continue;
+                // Kept: the triangles within reach plus a skin, each relative move until the
+                // next build being less than a skin (neighbourListsStale); the grid's cells
+                // hold many more, which every step would search (docs/theory-dem.md §7, "Cost").
+                clearance = 1e300;
+                std::size_t kept = 0;
+                for (int t : found) {
+                    const Vec3* p = &triangle_vertices_[3 * (wall.first_triangle + t)];
+                    const double d = norm(local - closestPointOnTriangle(local, p[0], p[1], p[2]));
+                    clearance = std::min(clearance, d);
+                    if (d <= (reach + skin_) * (1.0 + 1e-9)) found[kept++] = t;
+                }
+                found.resize(kept);
             }
             next.cell.push_back(c);
             next.wall.push_back(w);
+            next.centre_at_build.push_back(local);
+            next.clearance_at_build.push_back(clearance);
             for (int t : found) next.triangles.push_back(wall.first_triangle + t);
             next.triangle_offset.push_back(static_cast<int>(next.triangles.size()));
             while (old < wall_items_.cell.size() &&

@@ -129,9 +129,9 @@ DemMemoryBytes DemModel::memoryUse() const
     // build saw of them.
     m.wall_items = fieldBytes(wall_items_) + capacityBytes(contact_frequency2_) +
                    capacityBytes(triangle_vertices_) + capacityBytes(triangle_features_) +
-                   capacityBytes(walls_) + capacityBytes(wall_poses_) + capacityBytes(triangle_grids_) +
-                   capacityBytes(wall_origin_at_build_) + capacityBytes(wall_orientation_at_build_) +
-                   capacityBytes(wall_extent_);
+                   capacityBytes(triangle_prisms_) + capacityBytes(walls_) + capacityBytes(wall_poses_) +
+                   capacityBytes(triangle_grids_) + capacityBytes(wall_origin_at_build_) +
+                   capacityBytes(wall_orientation_at_build_) + capacityBytes(wall_extent_);
     for (const TriangleGrid& grid : triangle_grids_) m.wall_items += grid.memoryBytes();
     // Gather and neighbour lists, and the per-block partial sums.
     m.lists = capacityBytes(cell_interface_offset_) + capacityBytes(cell_interfaces_) +

@@ -41,6 +41,8 @@ int DemModel::addTriSurface(const std::vector<Vec3>& vertices,
     triangle_vertices_.insert(triangle_vertices_.end(), local.begin(), local.end());
     const std::vector<std::uint16_t> features = surfaceFeatureFlags(vertices, triangles);
     triangle_features_.insert(triangle_features_.end(), features.begin(), features.end());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        triangle_prisms_.push_back(trianglePrism(&local[3 * t]));
     triangle_grids_.emplace_back(local);
     walls_.push_back(w);
     double extent = 0.0;

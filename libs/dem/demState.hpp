@@ -228,7 +228,11 @@ template <template <class> class Array>
 struct WallContactArraysOf {
     static constexpr const char* entity = "wallItem";
     Array<int> cell, wall;
-    Array<int> triangle_offset, triangles;       // candidate triangles (tri surfaces)
+    Array<int> triangle_offset, triangles;  // candidate triangles (tri surfaces)
+    // Where the cell's centre was at the list build in the wall's frame, and its exact distance
+    // from the candidate triangles then (tri surfaces; 0 for a plate, or until the next build).
+    Array<Vec3> centre_at_build;
+    Array<double> clearance_at_build;
     Array<Vec3> tangential_spring, last_normal;  // history, carried by (cell, wall)
     Array<Vec3> force_on_cell, torque_on_cell;
     Array<double> elastic_energy, damping_power, friction_dissipation, wall_power;
@@ -244,6 +248,8 @@ struct WallContactArraysOf {
         visit(ArrayField<stateField | fixedField>{"wall", "-"}, g.wall...);
         visit(ArrayField<fixedField | rangedField>{"triangles", "-"},
               ranged(g.triangle_offset, g.triangles)...);
+        visit(ArrayField<fixedField>{"centreAtBuild", "m"}, g.centre_at_build...);
+        visit(ArrayField<fixedField>{"clearanceAtBuild", "m"}, g.clearance_at_build...);
         visit(ArrayField<stateField | carriedField>{"tangentialSpring", "m"}, g.tangential_spring...);
         visit(ArrayField<stateField | carriedField>{"lastNormal", "-"}, g.last_normal...);
         visit(ArrayField<derivedField>{"forceOnCell", "N"}, g.force_on_cell...);

@@ -103,6 +103,8 @@ void viewWallItemArrays(WallKernelArgs& a, Items& w)
     a.item_wall = w.wall.data();
     a.item_triangle_offset = w.triangle_offset.data();
     a.item_triangles = w.triangles.data();
+    a.item_centre_at_build = w.centre_at_build.data();
+    a.item_clearance_at_build = w.clearance_at_build.data();
     a.items.tangential_spring = w.tangential_spring.data();
     a.items.last_normal = w.last_normal.data();
     a.items.elastic_energy = w.elastic_energy.data();

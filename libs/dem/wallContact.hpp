@@ -19,6 +19,52 @@ struct WallPose {
     int n_triangles = 0;
 };
 
+// The prism of a triangle (wall frame): its plane and the three planes through its edges
+// normal to it. A point's distance from the plane and from the farthest edge plane it lies
+// outside of bound its distance from the triangle from below,
+//     d(x, t)^2 >= h^2 + max(0, e_0, e_1, e_2)^2,
+// a cheap test before the exact closest point (docs/theory-dem.md §7, "Cost"). Tight beside a
+// long sliver of a revolved liner, where a bounding sphere says little. A zero-area triangle
+// gets zero normals: a zero bound, always visited.
+struct TrianglePrism {
+    Vec3 normal;  // unit
+    double offset = 0.0;
+    Vec3 edge_normal[3];  // unit, in the plane, outward from edge k (corner k to k + 1)
+    double edge_offset[3] = {0.0, 0.0, 0.0};
+
+    // The bound's square (a lower bound of d(x, t)^2 up to round-off).
+    RF_HD double boundSquared(const Vec3& x) const
+    {
+        const double h = dot(normal, x) - offset;
+        double e = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double ek = dot(edge_normal[k], x) - edge_offset[k];
+            if (ek > e) e = ek;
+        }
+        return h * h + e * e;
+    }
+};
+
+RF_HD inline TrianglePrism trianglePrism(const Vec3* p)
+{
+    TrianglePrism t;
+    const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+    const double length = norm(n);
+    if (!(length > 0.0)) return t;
+    t.normal = (1.0 / length) * n;
+    t.offset = dot(t.normal, p[0]);
+    for (int k = 0; k < 3; ++k) {
+        Vec3 m = cross(p[(k + 1) % 3] - p[k], t.normal);
+        const double ml = norm(m);
+        if (!(ml > 0.0)) return TrianglePrism{};
+        m = (1.0 / ml) * m;
+        if (dot(m, p[(k + 2) % 3] - p[k]) > 0.0) m = -1.0 * m;  // outward: away from the third corner
+        t.edge_normal[k] = m;
+        t.edge_offset[k] = dot(m, p[k]);
+    }
+    return t;
+}
+
 struct WallKernelArgs {
     ContactConstants constants;  // rock–steel
     double dt = 0.0;
@@ -29,10 +75,18 @@ struct WallKernelArgs {
     // Per triangle: which of its edges and corners are convex features of the surface
     // (ridges and convex vertices, see ridgeBit), each flagged on one owning triangle only.
     const unsigned short* triangle_features = nullptr;
+    const TrianglePrism* triangle_prisms = nullptr;  // one per triangle; null: no bound test
+    // The twin tests' reference: every candidate triangle and every ridge–edge pair evaluated in
+    // full, none of the shortcuts (bounds, clearance, pruned pairs).
+    bool exhaustive = false;
     const int* item_cell = nullptr;
     const int* item_wall = nullptr;
     const int* item_triangle_offset = nullptr;  // candidate triangles of item i
     const int* item_triangles = nullptr;
+    // Per item: the centre at the list build (wall frame) and its distance from the candidate
+    // triangles then; null: every item searched.
+    const Vec3* item_centre_at_build = nullptr;
+    const double* item_clearance_at_build = nullptr;
     ContactItemOutputs items;
     Vec3* force_on_cell = nullptr;
     Vec3* torque_on_cell = nullptr;
@@ -161,6 +215,20 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
     const int begin = a.item_triangle_offset[item], end = a.item_triangle_offset[item + 1];
     const bool record = cull != nullptr && !cull->valid && end - begin <= max_culled_triangles;
     const bool culled = cull != nullptr && cull->valid;
+    // A triangle whose prism keeps it farther than the tolerance beyond the nearest point found
+    // so far is left unvisited: the visit would return without touching the sums, so the result
+    // is the same bit for bit. margin covers the round-off of the bound (coordinates' 1e-12).
+    const TrianglePrism* prisms = a.exhaustive ? nullptr : a.triangle_prisms;
+    const double margin =
+        1e-3 * tolerance + 1e-12 * (std::fabs(local.x) + std::fabs(local.y) + std::fabs(local.z));
+    auto beyond = [&](int t, double& bound) {
+        if (prisms == nullptr) return false;
+        const double reach = s.distance + tolerance + margin;
+        const double b2 = prisms[t].boundSquared(local);
+        if (!(b2 > reach * reach)) return false;
+        bound = record ? std::sqrt(b2) - margin : reach;
+        return true;
+    };
     if (culled) {
         // Start from the centre's nearest triangle: a close first bound.
         const double reach = norm(local - cull->centre);
@@ -168,11 +236,18 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
         for (int e = begin; e < end; ++e) {
             if (e - begin == cull->nearest) continue;
             if (cull->centre_distance[e - begin] - reach > s.distance + tolerance) continue;
-            sums.visit(a.triangle_vertices + 3 * a.item_triangles[e], local, tolerance, s);
+            const int t = a.item_triangles[e];
+            double bound = 0.0;
+            if (beyond(t, bound)) continue;
+            sums.visit(a.triangle_vertices + 3 * t, local, tolerance, s);
         }
     } else {
         for (int e = begin; e < end; ++e) {
-            const double d = sums.visit(a.triangle_vertices + 3 * a.item_triangles[e], local, tolerance, s);
+            const int t = a.item_triangles[e];
+            // Recorded for the core's vertices: the exact distance or, for a triangle left
+            // unvisited, the bound (below the exact one, so every later cull stays safe).
+            double d = 0.0;
+            if (!beyond(t, d)) d = sums.visit(a.triangle_vertices + 3 * t, local, tolerance, s);
             if (record) {
                 cull->centre_distance[e - begin] = d;
                 if (d < cull->least) cull->least = d, cull->nearest = e - begin;
@@ -187,6 +262,85 @@ RF_HD inline SurfaceNearest nearestOnSurface(const WallKernelArgs& a, const Wall
     s.point = wall.origin + wall.rotation * s.point;
     s.pseudo_normal = wall.rotation * s.pseudo_normal;
     return s;
+}
+
+// The core's edges as the ridge pairs see them, once per cell and wall (world frame): each
+// edge's unit direction (the one edgeAngleWeight takes), middle and half length. A core with
+// more edges than this holds is looked at edge by edge (n = 0).
+constexpr int max_wall_patch_edges = 64;
+struct CoreEdgeBounds {
+    bool filled = false;
+    int n = 0;
+    Vec3 direction[max_wall_patch_edges], middle[max_wall_patch_edges];
+    double half[max_wall_patch_edges];
+
+    RF_HD void fill(const ConvexVertexSet& core, const unsigned char* edges, int n_entries)
+    {
+        filled = true;
+        if (n_entries > 2 * max_wall_patch_edges) return;
+        for (int j = 0; j + 1 < n_entries; j += 2) {
+            const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
+            direction[j / 2] = normalised(x1 - x0);
+            middle[j / 2] = 0.5 * (x0 + x1);
+            half[j / 2] = 0.5 * norm(x1 - x0);
+        }
+        n = n_entries / 2;
+    }
+};
+
+// The pairs of a ridge (r0, r1) of triangle p with the core's edges (see wallPatch). A core
+// edge whose middle is farther from the ridge's line than r_d plus its half length cannot come
+// within r_d of the ridge (its overlap would be <= 0): it is passed over without the closest
+// points, which leaves every point of the patch as it was (docs/theory-dem.md §7, "Cost").
+RF_HD inline void ridgeEdgePairs(const Vec3& r0, const Vec3& r1, const Vec3* p, double side,
+                                 const ConvexVertexSet& core, const unsigned char* edges,
+                                 const CoreEdgeBounds& bounds, int n_entries, double radius,
+                                 PatchPoint* points, int& n, bool& cores_intersect)
+{
+    const Vec3 ridge = normalised(r1 - r0);
+    const double margin = 1e-6 * radius;
+    for (int j = 0; j + 1 < n_entries; j += 2) {
+        Vec3 along;
+        if (bounds.n > 0) {
+            const double limit = radius + bounds.half[j / 2] + margin;
+            if (norm2(cross(bounds.middle[j / 2] - r0, ridge)) > limit * limit) continue;
+            along = bounds.direction[j / 2];
+        }
+        const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
+        if (bounds.n == 0) along = normalised(x1 - x0);
+        EdgeAngleWeight w;  // 0 near parallel: left to the vertex pairs
+        if (!edgeAngleWeight(along, ridge, radius, w)) continue;
+        Vec3 on_surface, on_core;
+        closestPointsOfSegments(r0, r1, x0, x1, on_surface, on_core);
+        const Vec3 gap = on_core - on_surface;
+        double distance = norm(gap);
+        PatchPoint pt;
+        // Only a pair nearer than r_d can have crossed within reach (its closest
+        // points then lie inside both segments and their distance is the lines'):
+        // the far pairs of this hot loop skip the test.
+        Vec3 crossing;
+        if (distance < radius &&
+            crossingNormal(r0, r1, x0, x1, on_surface, on_core, side * areaNormal(p),
+                           0.5 * (x0 + x1) - core.position, crossing) &&
+            !(dot(gap, crossing) > 0.0)) {
+            // The ridge has passed through the core edge (the core is r_d deep):
+            // the lines' signed distance continues through zero, so the overlap
+            // keeps growing (up to 2 r_d) and still derives from the potential.
+            distance = dot(gap, crossing);
+            pt.normal = crossing;
+            cores_intersect = true;
+        } else if (distance > 1e-9 * radius) {
+            pt.normal = gap / distance;
+        } else {  // the ridge cuts the core edge where their lines cannot cross
+            pt.normal = normalised(core.position - on_surface);
+            cores_intersect = true;
+        }
+        pt.overlap = w.weight * radius - distance;
+        if (!(pt.overlap > 0.0)) continue;
+        pt.torque_per_force = w.torque_per_force;  // the weight's own torque
+        pt.point = on_core - (radius - 0.5 * pt.overlap) * pt.normal;
+        addPatchPoint(points, n, pt);
+    }
 }
 
 // The patch of a cell against a wall: one point per pair of features of the core and
@@ -255,6 +409,7 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
     const double reach = a.cells.bounding_radius[c];  // of the dilated core about its centre
     const unsigned char* edges = a.cells.core_edges + a.cells.core_edge_offset[c];
     const int n_edge_entries = a.cells.core_edge_offset[c + 1] - a.cells.core_edge_offset[c];
+    CoreEdgeBounds core_edges;  // filled at the first ridge within reach
     for (int e = a.item_triangle_offset[item]; e < a.item_triangle_offset[item + 1]; ++e) {
         const int t = a.item_triangles[e];
         const unsigned short flags = a.triangle_features[t];
@@ -271,41 +426,10 @@ RF_HD inline int wallPatch(const WallKernelArgs& a, const ConvexVertexSet& core,
                 Vec3 on_ridge, unused;
                 closestPointsOfSegments(r0, r1, core.position, core.position, on_ridge, unused);
                 const int n_entries = norm(on_ridge - core.position) < reach ? n_edge_entries : 0;
-                const Vec3 ridge = n_entries > 0 ? normalised(r1 - r0) : Vec3{};
-                for (int j = 0; j + 1 < n_entries; j += 2) {
-                    const Vec3 x0 = worldVertex(core, edges[j]), x1 = worldVertex(core, edges[j + 1]);
-                    EdgeAngleWeight w;  // 0 near parallel: left to the vertex pairs
-                    if (!edgeAngleWeight(normalised(x1 - x0), ridge, radius, w)) continue;
-                    Vec3 on_surface, on_core;
-                    closestPointsOfSegments(r0, r1, x0, x1, on_surface, on_core);
-                    const Vec3 gap = on_core - on_surface;
-                    double distance = norm(gap);
-                    PatchPoint pt;
-                    // Only a pair nearer than r_d can have crossed within reach (its closest
-                    // points then lie inside both segments and their distance is the lines'):
-                    // the far pairs of this hot loop skip the test.
-                    Vec3 crossing;
-                    if (distance < radius &&
-                        crossingNormal(r0, r1, x0, x1, on_surface, on_core, side * areaNormal(p),
-                                       0.5 * (x0 + x1) - core.position, crossing) &&
-                        !(dot(gap, crossing) > 0.0)) {
-                        // The ridge has passed through the core edge (the core is r_d deep):
-                        // the lines' signed distance continues through zero, so the overlap
-                        // keeps growing (up to 2 r_d) and still derives from the potential.
-                        distance = dot(gap, crossing);
-                        pt.normal = crossing;
-                        cores_intersect = true;
-                    } else if (distance > 1e-9 * radius) {
-                        pt.normal = gap / distance;
-                    } else {  // the ridge cuts the core edge where their lines cannot cross
-                        pt.normal = normalised(core.position - on_surface);
-                        cores_intersect = true;
-                    }
-                    pt.overlap = w.weight * radius - distance;
-                    if (!(pt.overlap > 0.0)) continue;
-                    pt.torque_per_force = w.torque_per_force;  // the weight's own torque
-                    pt.point = on_core - (radius - 0.5 * pt.overlap) * pt.normal;
-                    addPatchPoint(points, n, pt);
+                if (n_entries > 0) {
+                    if (!core_edges.filled) core_edges.fill(core, edges, a.exhaustive ? 0 : n_edge_entries);
+                    ridgeEdgePairs(r0, r1, p, side, core, edges, core_edges, n_entries, radius, points, n,
+                                   cores_intersect);
                 }
             }
             if ((flags & convexCornerBit(k, side)) && norm(p[k] - core.position) < reach) {
@@ -352,6 +476,18 @@ RF_HD inline void wallKernel(const WallKernelArgs& a, int item)
     bool cores_intersect = false;
     double side = 1.0;
     SurfaceCull cull;
+    if (wall.kind == wallTriSurface && a.item_clearance_at_build != nullptr && !a.exhaustive) {
+        // The centre's distance from the surface now is at least its distance at the list build
+        // less how far it has moved in the wall's frame since: when that keeps it beyond the
+        // dilated core's reach (plus a round-off margin), the search below would find the same
+        // and the item is cleared without it (docs/theory-dem.md §7, "Cost").
+        const Vec3 local = transposeTimes(wall.rotation, core.position - wall.origin);
+        const double margin = 1e-9 * a.cells.bounding_radius[c] +
+                              1e-12 * (std::fabs(local.x) + std::fabs(local.y) + std::fabs(local.z));
+        if (a.item_clearance_at_build[item] - norm(local - a.item_centre_at_build[item]) >
+            a.cells.bounding_radius[c] + margin)
+            return clearItem(a.items, item);
+    }
     if (wall.kind == wallTriSurface) {
         // The nearest point of the surface to the centre gives the cell's side; when it is
         // farther than the dilated core reaches (bounding radius), nothing can touch.
