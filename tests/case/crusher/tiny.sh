@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # CH660 tiny: three small rocks beside the mantle in the parallel zone; the mass balance
-# closes (fed = inside + discharged) and the mantle draws power (it nips them). The mantle
+# closes (fed = inside + discharged) and the mantle draws power (it nips them); crusherPost's
+# figures per tonne (specific energy, P80/CSS, F80, F80/P80) match their definitions. The mantle
 # is free to spin here (the tutorial's `spin fixed` is the same code with the spin at rest,
 # tests/unit/crusher "[spin]"): the nipped rocks turn it about its axis (I psi'' = tau_a -
 # c psi', libs/crusher/mantleSpin.hpp) and machine.dat books the drive's work as the wall's
