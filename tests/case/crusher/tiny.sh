@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # CH660 tiny: three small rocks beside the mantle in the parallel zone; the mass balance
-# closes (fed = inside + discharged) and the mantle draws power (it nips them). The mantle
+# closes (fed = inside + discharged) and the mantle draws power (it nips them); crusherPost's
+# figures per tonne (specific energy, P80/CSS, F80, F80/P80) match their definitions. The mantle
 # is free to spin here (the tutorial's `spin fixed` is the same code with the spin at rest,
 # tests/unit/crusher "[spin]"): the nipped rocks turn it about its axis (I psi'' = tau_a -
 # c psi', libs/crusher/mantleSpin.hpp) and machine.dat books the drive's work as the wall's
@@ -46,6 +47,50 @@ awk -v f="$fed" -v w="$mantle_work" -v p="$power" -v d="$discharged" -v ew="$(by
         exit !ok }' ||
     fail "moved from the documented run: fed $fed kg, mantle work $mantle_work J, power $power W, discharged $discharged kg"
 echo "ok: in the bands (mantle work $mantle_work J, discharged $discharged kg)"
+
+# The figures per tonne (docs/theory-crusher.md "Figures per tonne"): the old keys first and in
+# their order (readers of summary.dat by position), no inf or nan, and each new figure against
+# its definition, computed here from the summary's own columns and from machine.dat alone.
+summary=postProcessing/crusherPost/summary.dat
+key() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' "$summary"; }
+keys=$(awk -F'\t' '!/^#/ { printf "%s ", $1 }' "$summary")
+[ "$keys" = "powerMean_W powerSpread_W pressureMean_Pa pressureSpread_Pa throughputMean_kg_s throughputSpread_kg_s throughputMean_t_h massFed_kg massInside_kg massDischarged_kg massImbalance_kg fragmentsDischarged P50_m P80_m CSS_m specificEnergy_kWh_t specificEnergySpread_kWh_t P80_CSS F80_m reductionRatio_F80_P80 " ] ||
+    fail "summary.dat keys: $keys"
+! grep -qiE '(^|[^a-z])(nan|inf)([^a-z]|$)' "$summary" || fail "summary.dat holds inf or nan: $(cat "$summary")"
+# F80 of the feed's sizeRange (sizes uniform in number, mass ~ size^3), read here from constant/loading.
+range=$(sed -n 's/^ *sizeRange *( *\([^ ]*\) *\([^ )]*\) *).*/\1 \2/p' constant/loading)
+awk -v r="$range" -v f="$(key F80_m)" 'BEGIN { split(r, a, " "); lo = a[1]^4; hi = a[2]^4
+        want = (lo + 0.8 * (hi - lo))^0.25; d = f - want; if (d < 0) d = -d
+        exit !(a[1] > 0 && d <= 1e-5 * want && want > 0.0173 && want < 0.0175) }' ||
+    fail "F80_m $(key F80_m) is not the 80 % passing size of sizeRange ($range)"
+# Mean power and throughput over the steady window (steadyStart 0: every row after the first).
+means=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) { n = $i; sub(/ \[.*/, "", n); sub(/^# /, "", n); c[n] = i }; next }
+    !/^#/ && NF > 1 { t = $c["Time"]; m = $c["massDischarged"]
+                      if (rows++ > 0) { p += $c["power"]; if (t > t0) q += (m - m0) / (t - t0); n++ }
+                      t0 = t; m0 = m }
+    END { printf "%.17g %.17g", p / n, q / n }' postProcessing/machine/0/machine.dat)
+if [ "$(key fragmentsDischarged)" -gt 0 ]; then
+    awk -v m="$means" -v e="$(key specificEnergy_kWh_t)" -v es="$(key specificEnergySpread_kWh_t)" \
+        -v P="$(key powerMean_W)" -v sP="$(key powerSpread_W)" -v Q="$(key throughputMean_kg_s)" \
+        -v sQ="$(key throughputSpread_kg_s)" 'function rel(a, b) { d = (a - b) / b; return d < 0 ? -d : d }
+        BEGIN { split(m, a, " "); mine = a[1] / a[2] / 3600; fromCols = P / Q / 3600
+                spread = fromCols * sqrt((sP / P)^2 + (sQ / Q)^2)
+                printf "specific energy %s kWh/t (spread %s): machine.dat %.6g, summary columns %.6g, spread %.6g\n",
+                       e, es, mine, fromCols, spread
+                exit !(e > 0 && a[2] > 0 && rel(e, mine) < 1e-5 && rel(e, fromCols) < 2e-5 && rel(es, spread) < 2e-5) }' ||
+        fail "specific energy: $(key specificEnergy_kWh_t) kWh/t is not mean power / mean throughput ($means)"
+    awk -v r="$(key P80_CSS)" -v p="$(key P80_m)" -v c="$(key CSS_m)" -v rr="$(key reductionRatio_F80_P80)" \
+        -v f="$(key F80_m)" 'function rel(a, b) { d = (a - b) / b; return d < 0 ? -d : d }
+        BEGIN { exit !(p > 0 && rel(r, p / c) < 2e-5 && rel(rr, f / p) < 2e-5) }' ||
+        fail "P80_CSS $(key P80_CSS) or reductionRatio_F80_P80 $(key reductionRatio_F80_P80) inconsistent with P80 $(key P80_m), CSS $(key CSS_m), F80 $(key F80_m)"
+else
+    # Nothing discharged (the small size): no throughput, no P80; the feed's F80 all the same.
+    for k in specificEnergy_kWh_t P80_CSS reductionRatio_F80_P80; do
+        key "$k" | grep -q "^not available: ." || fail "$k without a discharge: '$(key "$k")'"
+    done
+fi
+crusherPost -dry-run | grep -q "^Specific energy  " || fail "crusherPost's screen summary has no specific energy line"
+echo "ok: per tonne: specificEnergy_kWh_t $(key specificEnergy_kWh_t); P80_CSS $(key P80_CSS); F80_m $(key F80_m); reductionRatio_F80_P80 $(key reductionRatio_F80_P80)"
 
 # The spin's columns, by name: it turned, and drive work = wall work + spin energy + bearing loss.
 # The identity holds by construction (driveWork is written as mantleWork + the spin's torque

@@ -2,12 +2,15 @@
 //
 // Reads  postProcessing/machine/0/machine.dat, postProcessing/discharge/0/discharge.dat,
 //        system/crusherPostDict (steadyStart [s], pistonArea [m^2]),
-//        constant/crusherKinematics (closedSideSetting, for P80 vs CSS)
+//        constant/crusherKinematics (closedSideSetting, for P80 vs CSS),
+//        constant/loading (feed/sizeRange, for the feed's F80)
 // Writes postProcessing/crusherPost/summary.dat, power.png, pressure.png, throughput.png, psd.png
 //
 // Definitions (docs/theory-crusher.md): power draw = sum of contact force . mantle
 // surface velocity; hydraulic pressure = vertical force on the mantle / piston area;
 // throughput = discharged mass per second; means and spreads over t >= steadyStart.
+// Per tonne (libs/crusher/crusherFigures.hpp): specific energy = mean power / mean
+// throughput [kWh/t], P80/CSS, the feed's F80 and the reduction ratio F80/P80.
 #include <cmath>
 #include <cstdio>
 
@@ -15,6 +18,7 @@
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/knownEntries.hpp"
+#include "crusher/crusherFigures.hpp"
 #include "crusher/machineLoading.hpp"
 #include "fragments/psd.hpp"
 #include "io/timeSeries.hpp"
@@ -27,9 +31,9 @@ namespace {
 
 const AppInfo info{
     "crusherPost",
-    "Power draw, hydraulic pressure, throughput (steady-state means and spreads after the start-up)\n"
-    "and the discharge PSD (P50, P80 against the CSS) of a bondedDemFoam crusher run, with PNG plots\n"
-    "and a one-screen summary.",
+    "Power draw, hydraulic pressure, throughput (steady-state means and spreads after the start-up),\n"
+    "the discharge PSD (P50, P80 against the CSS), the specific energy (kWh/t), the feed's F80 and\n"
+    "the reduction ratio of a bondedDemFoam crusher run, with PNG plots and a one-screen summary.",
     "[options]",
     {"crusherPost -case tutorials/CH660/tiny"},
     {},
@@ -64,6 +68,75 @@ void plotSeries(const fs::path& png, const std::string& title, const std::string
          ", graph 1 nohead dt 2\n";
     g += "plot $data using 1:2 with lines " + plot::seriesColour(0) + " title ''\n";
     plot::renderPng(g, png);
+}
+
+// The feed's F80 from constant/loading's feed/sizeRange (the distribution the factory draws
+// from, not the few rocks a short run fed); not available without it.
+CrusherFigure feedF80(const fs::path& loadingFile)
+{
+    CrusherFigure f;
+    f.why = "no feed/sizeRange in " + loadingFile.string();
+    if (!fs::exists(loadingFile)) return f;
+    const Dictionary loading = Dictionary::readFile(loadingFile);
+    if (!loading.isDict("feed") || !loading.subDict("feed").found("sizeRange")) return f;
+    const auto range = loading.subDict("feed").get<std::vector<double>>("sizeRange");
+    if (range.size() != 2 || !(range[0] > 0.0) || !(range[1] >= range[0])) {
+        f.why = loadingFile.string() + ": feed/sizeRange is not (min max) with 0 < min <= max";
+        return f;
+    }
+    return {true, uniformFeedPassingSize(range[0], range[1], 0.8), 0.0, ""};
+}
+
+// The figures per tonne: specific energy, F80, P80/CSS, F80/P80.
+struct PerTonne {
+    CrusherFigure energy, f80, p80Css, reduction;
+};
+
+PerTonne perTonne(const Stat& power, const Stat& throughput, int nFragments, double p80, double css,
+                  const fs::path& loadingFile)
+{
+    PerTonne r;
+    r.energy = specificEnergy(power.mean, power.spread, throughput.mean, throughput.spread);
+    if (power.n == 0) r.energy = {false, 0.0, 0.0, "no rows in the steady window"};
+    r.f80 = feedF80(loadingFile);
+    const std::string noPsd = "nothing discharged yet (no P80)";
+    r.p80Css = sizeRatio(nFragments > 0 ? p80 : 0.0, css, noPsd);
+    r.reduction = sizeRatio(r.f80.available ? r.f80.value : 0.0, nFragments > 0 ? p80 : 0.0,
+                            r.f80.available ? noPsd : r.f80.why);
+    return r;
+}
+
+// One figure as text: its value (or spread) with 6 digits, or "not available: <why>".
+std::string figureText(const CrusherFigure& f, bool spread = false)
+{
+    if (!f.available) return "not available: " + f.why;
+    char b[64];
+    std::snprintf(b, sizeof(b), "%.6g", spread ? f.spread : f.value);
+    return b;
+}
+
+std::string perTonneKeys(const PerTonne& r)
+{
+    return "specificEnergy_kWh_t\t" + figureText(r.energy) + "\nspecificEnergySpread_kWh_t\t" +
+           figureText(r.energy, true) + "\nP80_CSS\t" + figureText(r.p80Css) + "\nF80_m\t" +
+           figureText(r.f80) + "\nreductionRatio_F80_P80\t" + figureText(r.reduction) + "\n";
+}
+
+void printPerTonne(const PerTonne& r)
+{
+    if (r.energy.available)
+        std::printf("Specific energy   %10.4g kWh/t (spread %.3g kWh/t; mean power / mean throughput)\n",
+                    r.energy.value, r.energy.spread);
+    else
+        std::printf("Specific energy   %s\n", figureText(r.energy).c_str());
+    std::printf("P80 / CSS         %s\n", figureText(r.p80Css).c_str());
+    if (r.f80.available)
+        std::printf("Feed F80          %10.4g mm   (feed/sizeRange, uniform in number, mass ~ size^3)\n",
+                    1e3 * r.f80.value);
+    else
+        std::printf("Feed F80          %s\n", figureText(r.f80).c_str());
+    std::printf("Reduction ratio   %s%s\n", figureText(r.reduction).c_str(),
+                r.reduction.available ? " (F80 / P80)" : "");
 }
 
 }  // namespace
@@ -121,6 +194,7 @@ int main(int argc, char** argv)
             }
         }
         const fs::path dir = app.path("postProcessing/crusherPost");
+        const PerTonne figures = perTonne(P, Q, nFragments, psd.p80, css, app.path("constant/loading"));
         char text[2000];
         std::snprintf(
             text, sizeof(text),
@@ -134,7 +208,8 @@ int main(int argc, char** argv)
             inside.back(), out.back(), imbalance, nFragments, psd.p50, psd.p80, css);
         if (!app.dryRun()) {  // a dry run writes nothing
             fs::create_directories(dir);
-            writeFileAtomically(dir / "summary.dat", [&](std::ostream& o) { o << text; });
+            writeFileAtomically(dir / "summary.dat",
+                                [&](std::ostream& o) { o << text << perTonneKeys(figures); });
         }
         std::printf("Steady window t >= %g s (%d rows of %zu)\n", steadyStart, P.n, t.size());
         std::printf("Power draw        %10.4g kW   (spread %.3g kW)\n", 1e-3 * P.mean, 1e-3 * P.spread);
@@ -149,6 +224,7 @@ int main(int argc, char** argv)
                 nFragments, 1e3 * psd.p50, 1e3 * psd.p80, 1e3 * css, 1e3 * (psd.p80 - css));
         else
             std::printf("Discharge PSD: nothing discharged yet\n");
+        printPerTonne(figures);
         if (!app.dryRun()) {
             try {
                 plotSeries(dir / "power.png", "Power draw", "power [kW]", t, power, 1e-3, steadyStart);
