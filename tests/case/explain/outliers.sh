@@ -5,6 +5,7 @@
 #                 contact cell lost under a plate): the odd specimens are reported (log,
 #                 outliers.dat, explainGap.result), the features become medians, and at the
 #                 full size there is no gap alarm;
+#   tooMany       more than a quarter of the curves cut so: no conclusion (inconclusive);
 #   smallDiscs    the specimens are discs 8 % smaller than the model case's (twin data from a
 #                 scaled copy of the case, with their dimensions in the measurements): the
 #                 geometry mismatch is named as its own finding.
@@ -45,6 +46,16 @@ grep -q "summarised by medians" oddSpecimens/study/explainGap.report ||
 [ "$(caseDict -case oddSpecimens/study explainGap.result -entry robustStatistics -value)" = yes ] ||
     fail "oddSpecimens: robustStatistics is not yes in explainGap.result"
 echo "oddSpecimens: [$listed] reported, medians used"
+
+# Too many odd specimens (3 of 8, 7 of 24: more than a quarter): no conclusion.
+oddIds=$(bySize "TW-01 TW-02 TW-03 TW-04 TW-05 TW-06 TW-07" "TW-01 TW-02 TW-03")
+POSTPROCESS=cutCurves scenario tooMany "" inconclusive ""
+[ "$(caseDict -case tooMany/study explainGap.result -entry verdict -value)" = inconclusive ] ||
+    fail "tooMany: the verdict is not inconclusive"
+grep -q "no conclusion: too many fail differently" tooMany/study/explainGap.report ||
+    fail "tooMany: the report does not say why it does not conclude"
+[ ! -e tooMany/study/gapTable.dat ] || fail "tooMany: a gap table was written without a conclusion"
+echo "tooMany: no conclusion"
 
 # Discs 8 % smaller (diameter and thickness) than the model case's.
 cp -r bdt bdtSmall
