@@ -47,10 +47,11 @@ double chiSquareSurvival(double x, double k)
     return y < a + 1.0 ? 1.0 - lowerSeries(a, y) : upperFraction(a, y);
 }
 
-HeldOutTest heldOutTest(const std::vector<double>& z, double significance)
+HeldOutTest heldOutTest(const std::vector<double>& z, double significance, double chiSquare)
 {
     HeldOutTest t;
     for (double v : z) t.chiSquare += v * v;
+    if (chiSquare >= 0.0) t.chiSquare = chiSquare;
     t.degreesOfFreedom = static_cast<int>(z.size());
     t.pValue = z.empty() ? 1.0 : chiSquareSurvival(t.chiSquare, t.degreesOfFreedom);
     t.consistent = t.pValue >= significance;

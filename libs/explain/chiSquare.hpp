@@ -15,6 +15,7 @@ constexpr double remainingZ = 2.0;
 // The absolute test after the relative one (docs/explainGap.md, step 8): are the
 // normalised held-out feature errors z of a model consistent with the scatter? Nothing is
 // fitted on the held-out specimens, so sum z^2 has as many degrees of freedom as features.
+// A given chiSquare (>= 0: the quadratic form of correlated errors) replaces sum z^2.
 struct HeldOutTest {
     double chiSquare = 0.0;
     int degreesOfFreedom = 0;
@@ -24,6 +25,6 @@ struct HeldOutTest {
     // off but the test rejects, the largest one alone.
     std::vector<std::size_t> remaining;
 };
-HeldOutTest heldOutTest(const std::vector<double>& z, double significance);
+HeldOutTest heldOutTest(const std::vector<double>& z, double significance, double chiSquare = -1.0);
 
 }  // namespace rockfrac::explain

@@ -55,12 +55,14 @@ using RunsPerCondition = std::vector<PointRuns>;
 
 // When a Gauss-Newton refit stops: converged when the next step moves every parameter by
 // less than stepTolerance of its probe, or when an accepted step lowers chi-square by less
-// than chiTolerance; not converged after maxSteps simulated steps or two in a row that did
-// not lower chi-square. The default is the baseline refit's (three steps).
+// than chiTolerance; after two steps in a row that did not lower chi-square, converged when
+// the linearised fit expects another to gain less than expectedGainTolerance; not converged
+// after maxSteps simulated steps. The default is the baseline refit's (three steps).
 struct RefitControl {
     int maxSteps = 3;
     double stepTolerance = 1e-3;
     double chiTolerance = 0.0;
+    double expectedGainTolerance = 0.0;
 };
 
 class Analysis {
@@ -99,9 +101,12 @@ private:
         Summaries model;
         double chi = 0.0;
         Eigen::MatrixXd covariance;  // of the free parameters (linearised)
-        bool converged = false;      // the refit met its criterion (refit())
-        int steps = 0;               // simulated Gauss-Newton steps
-        std::string stopped;         // why the refit stopped
+        // The sensitivities the refit ended with: observed features (whitened by sigmaCal_) per
+        // free parameter, in physical units
+        Eigen::MatrixXd sensitivities;
+        bool converged = false;  // the refit met its criterion (refit())
+        int steps = 0;           // simulated Gauss-Newton steps
+        std::string stopped;     // why the refit stopped
     };
 
     // explainGap.cpp: the data and the study.

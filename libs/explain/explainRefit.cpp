@@ -11,8 +11,9 @@ namespace rockfrac::explain::detail {
 
 // The joint refit of an effect with the baseline runs to convergence: a step below 5 % of
 // every parameter's probe, or a chi-square gain below 0.1 (a tenth of one degree of freedom's
-// expectation), within 8 simulated steps.
-constexpr RefitControl jointRefit{8, 0.05, 0.1};
+// expectation), within 8 simulated steps; after two failed steps, when another is expected to
+// gain less than 0.5.
+constexpr RefitControl jointRefit{8, 0.05, 0.1, 0.5};
 
 Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, const std::string& label,
                               const Fit* previous, RefitControl control)
@@ -49,11 +50,17 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
     std::string stopped = "the cap of " + std::to_string(control.maxSteps) + " steps";
     bool converged = false;
     while (steps < control.maxSteps) {
+        const Eigen::VectorXd r = residual(best.model, false, sigmaCal_);
+        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(r);
         if (worse >= 2) {
-            stopped = "two steps in a row did not lower chi-square";
+            // At the seeds' noise floor when the sensitivities, updated by the failed steps,
+            // expect next to nothing from another step.
+            const double expected = r.squaredNorm() - (r - A * step).squaredNorm();
+            converged = expected < control.expectedGainTolerance;
+            stopped = "two steps in a row did not lower chi-square; another would gain " +
+                      format(expected, 2) + " by the linearised fit";
             break;
         }
-        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, false, sigmaCal_));
         std::vector<double> next = best.values;
         for (int k = 0; k < n; ++k)
             next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
@@ -99,6 +106,7 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
     best.steps = steps;
     best.stopped = stopped;
     const Eigen::MatrixXd unscaled = A * scale.cwiseInverse().asDiagonal();
+    best.sensitivities = unscaled;
     best.covariance = (unscaled.transpose() * unscaled).completeOrthogonalDecomposition().pseudoInverse();
     return best;
 }

@@ -62,7 +62,6 @@ int Analysis::decideVerdict(const std::vector<int>& candidates, const std::vecto
             rivals.push_back(e);
     }
     twins.insert(twins.end(), rivals.begin(), rivals.end());
-    const ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
     if (!twins.empty()) {
         describeIndistinguishable(top, twins, rivals, out);
         return -1;
@@ -78,8 +77,37 @@ int Analysis::decideVerdict(const std::vector<int>& candidates, const std::vecto
 void Analysis::testAbsolutely(int top, const Fit& fit, ExplainOutcome& out)
 {
     ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
-    const Eigen::VectorXd r = residual(fit.model, true, sigmaHeld_);
-    const HeldOutTest test = heldOutTest(std::vector<double>(r.data(), r.data() + r.size()), s_.significance);
+    // The held-out errors carry the held-out specimens' and the model's scatter (sigmaHeld_)
+    // and the fitted parameters' uncertainty, J C J^T (C their covariance from the fit on the
+    // other half): chi-square r^T S^-1 r with S = D + J C J^T in whitened units (D below), and
+    // each feature's error named in its own standard errors r_i / sqrt(S_ii).
+    // J: the refit's own sensitivities (Broyden-updated along its path), whitened for the held-out half.
+    const int m = static_cast<int>(obs_.size());
+    Eigen::MatrixXd J = fit.sensitivities;
+    for (int i = 0; i < m; ++i)
+        J.row(i) *= sigmaCal_[static_cast<std::size_t>(i)] / sigmaHeld_[static_cast<std::size_t>(i)];
+    // A feature on which the two measured halves disagree by d > 1 of their standard errors has
+    // more scatter than its standard errors say (heavy tails: a rock that slides or not): its
+    // variance is taken d^2 times as large, so that the test does not blame the model for it.
+    Eigen::VectorXd inflation = Eigen::VectorXd::Ones(m);
+    for (int i = 0; i < m; ++i) {
+        const Observed& o = obs_[static_cast<std::size_t>(i)];
+        const FeatureSummary &cal = half(o, false).features, &held = half(o, true).features;
+        const double d =
+            (cal.value[o.feature] - held.value[o.feature]) /
+            std::max(std::hypot(cal.standardError[o.feature], held.standardError[o.feature]), 1e-300);
+        inflation[i] = std::max(1.0, d * d);
+        if (std::fabs(d) > 2)
+            say("  absolute test: the measured halves disagree on " + label(o) + " by " +
+                format(std::fabs(d), 2) + " standard errors; its scatter is taken " +
+                format(std::fabs(d), 2) + " times as large");
+    }
+    const Eigen::MatrixXd S = Eigen::MatrixXd(inflation.asDiagonal()) + J * fit.covariance * J.transpose();
+    Eigen::VectorXd r = residual(fit.model, true, sigmaHeld_);
+    const double chi = r.dot(S.ldlt().solve(r));
+    for (int i = 0; i < m; ++i) r[i] /= std::sqrt(S(i, i));
+    const HeldOutTest test =
+        heldOutTest(std::vector<double>(r.data(), r.data() + r.size()), s_.significance, chi);
     t.heldOutChiSquare = test.chiSquare;
     t.heldOutPValue = test.pValue;
     out.effect = t.name;

@@ -81,6 +81,14 @@ TEST_CASE("absolute held-out test", "[explain][chiSquare]")
         REQUIRE(t.remaining.size() == 1);
         CHECK(t.remaining[0] == 5);
     }
+    SECTION("the quadratic form of correlated errors replaces the sum of squares")
+    {
+        const HeldOutTest t = heldOutTest({3.0, 3.0}, 0.01, 4.0);
+        CHECK(t.chiSquare == 4.0);
+        CHECK(t.pValue == Approx(std::exp(-2.0)));
+        CHECK(t.consistent);
+        CHECK(t.remaining.size() == 2);  // still named beyond 2 standard errors each
+    }
     SECTION("at the significance level's boundary")
     {
         // chi-square 6.635 on 1 degree of freedom is the 1 % point.
