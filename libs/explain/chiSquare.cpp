@@ -1,6 +1,8 @@
 #include "explain/chiSquare.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace rockfrac::explain {
 
@@ -43,6 +45,24 @@ double chiSquareSurvival(double x, double k)
     if (!(x > 0)) return 1.0;
     const double a = 0.5 * k, y = 0.5 * x;
     return y < a + 1.0 ? 1.0 - lowerSeries(a, y) : upperFraction(a, y);
+}
+
+HeldOutTest heldOutTest(const std::vector<double>& z, double significance, double chiSquare)
+{
+    HeldOutTest t;
+    for (double v : z) t.chiSquare += v * v;
+    if (chiSquare >= 0.0) t.chiSquare = chiSquare;
+    t.degreesOfFreedom = static_cast<int>(z.size());
+    t.pValue = z.empty() ? 1.0 : chiSquareSurvival(t.chiSquare, t.degreesOfFreedom);
+    t.consistent = t.pValue >= significance;
+    std::vector<std::size_t> order(z.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return std::fabs(z[a]) > std::fabs(z[b]); });
+    for (std::size_t i : order)
+        if (std::fabs(z[i]) > remainingZ) t.remaining.push_back(i);
+    if (t.remaining.empty() && !t.consistent && !order.empty()) t.remaining.push_back(order.front());
+    return t;
 }
 
 }  // namespace rockfrac::explain

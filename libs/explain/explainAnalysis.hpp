@@ -5,6 +5,7 @@
 //   explainScreening.cpp  1-4: baseline scatter, sensitivities, baseline refit, score tests
 //   explainRefit.cpp      the Gauss-Newton refit, and 5: the candidates' joint refits
 //   explainVerdict.cpp    the verdict and its sentence
+//   explainChecks.cpp     the checks before any fit: odd specimens and members, geometry
 //   explainReport.cpp     the tables, the result and report files, the augmented case, the plots
 #include <Eigen/Dense>
 #include <algorithm>
@@ -31,6 +32,7 @@ std::string format(double v, int digits = 4);
 struct Half {
     std::vector<std::string> ids;
     FeatureSummary features;
+    std::vector<CurveFeatures> curves;  // per specimen, with curves
     std::vector<double> loads;
     std::vector<std::vector<double>> displacement, force;  // empty without curves
 };
@@ -50,6 +52,18 @@ struct Observed {
 // The model's features at one point of parameter space, one summary per condition.
 using Summaries = std::vector<FeatureSummary>;
 using RunsPerCondition = std::vector<PointRuns>;
+
+// When a Gauss-Newton refit stops: converged when the next step moves every parameter by
+// less than stepTolerance of its probe, or when an accepted step lowers chi-square by less
+// than chiTolerance; after two steps in a row that did not lower chi-square, converged when
+// the linearised fit expects another to gain less than expectedGainTolerance; not converged
+// after maxSteps simulated steps. The default is the baseline refit's (three steps).
+struct RefitControl {
+    int maxSteps = 3;
+    double stepTolerance = 1e-3;
+    double chiTolerance = 0.0;
+    double expectedGainTolerance = 0.0;
+};
 
 class Analysis {
 public:
@@ -87,6 +101,12 @@ private:
         Summaries model;
         double chi = 0.0;
         Eigen::MatrixXd covariance;  // of the free parameters (linearised)
+        // The sensitivities the refit ended with: observed features (whitened by sigmaCal_) per
+        // free parameter, in physical units
+        Eigen::MatrixXd sensitivities;
+        bool converged = false;  // the refit met its criterion (refit())
+        int steps = 0;           // simulated Gauss-Newton steps
+        std::string stopped;     // why the refit stopped
     };
 
     // explainGap.cpp: the data and the study.
@@ -94,6 +114,13 @@ private:
     void readBaselineValues();
     void describeStudy();
     void writeEffectTemplates();
+    void summariseMeasured();
+
+    // explainChecks.cpp: before any fit.
+    void checkGeometry(ExplainOutcome& out);
+    bool checkOddMembers(ExplainOutcome& out);
+    void noteOddMembers(const std::string& label, const RunsPerCondition& runs);
+    void writeOddMembers(const ExplainOutcome& out) const;
 
     // explainScreening.cpp: steps 1 to 4.
     void evaluateBaseline();
@@ -109,7 +136,7 @@ private:
     // explainRefit.cpp: Gauss–Newton refit of `free` parameters from `start` (checked by
     // simulation), and step 5.
     Fit refit(const std::vector<int>& free, const Fit& start, const std::string& label,
-              const Fit* previous = nullptr);
+              const Fit* previous = nullptr, RefitControl control = {});
     std::vector<int> confirmCandidates(const std::vector<int>& order, const Fit& baseline,
                                        ExplainOutcome& out, std::vector<Fit>& fits);
     bool refitWithEffect(int e, const Fit& baseline, const ScreenedEffect& se, Fit& fit);
@@ -118,7 +145,8 @@ private:
     void judgeRefit(int e, const Fit& fit, double aicBaseline, const ExplainOutcome& out, ScreenedEffect& se);
 
     // explainVerdict.cpp: the verdict; returns the effect that explains the gap, or -1.
-    int decideVerdict(const std::vector<int>& candidates, ExplainOutcome& out);
+    int decideVerdict(const std::vector<int>& candidates, const std::vector<Fit>& fits, ExplainOutcome& out);
+    void testAbsolutely(int top, const Fit& fit, ExplainOutcome& out);
     void describeIndistinguishable(int top, const std::vector<int>& twins, const std::vector<int>& rivals,
                                    ExplainOutcome& out);
     Eigen::VectorXd fullDirection(int e) const;
@@ -174,6 +202,7 @@ private:
             simulations_ += static_cast<int>(r.features.size()) + r.failed;
             all.push_back(std::move(r));
         }
+        if (!base0_.empty()) noteOddMembers(label, all);
         return all;
     }
     Summaries summary(const RunsPerCondition& runs) const

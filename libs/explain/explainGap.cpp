@@ -24,8 +24,12 @@ const char* verdictName(Verdict v)
             return "explained";
         case Verdict::indistinguishable:
             return "indistinguishable";
+        case Verdict::partlyExplained:
+            return "partlyExplained";
         case Verdict::unexplained:
             return "unexplained";
+        case Verdict::inconclusive:
+            return "inconclusive";
     }
     return "?";
 }
@@ -83,7 +87,6 @@ void Analysis::splitMeasurements()
         data.curves = std::all_of(specimens.begin(), specimens.end(),
                                   [](const auto& sp) { return sp.curve.has_value(); });
         // Every k-th specimen is held out, spread over the file order (no cherry-picking).
-        std::vector<CurveFeatures> calCurves, heldCurves;
         for (std::size_t i = 0; i < n; ++i) {
             const bool isHeld =
                 static_cast<std::size_t>(
@@ -100,7 +103,7 @@ void Analysis::splitMeasurements()
                         sp.curve->file.string() + " (specimen " + sp.id + "): " + why +
                         "; explainGap compares curves up to and past the failure: give the whole curve "
                         "to the load drop, or leave out every curve to compare failure loads only");
-                (isHeld ? heldCurves : calCurves).push_back(*c);
+                h.curves.push_back(*c);
                 h.loads.push_back(c->peakForce);
                 h.displacement.push_back(sp.curve->displacement);
                 h.force.push_back(sp.curve->force);
@@ -108,10 +111,9 @@ void Analysis::splitMeasurements()
                 h.loads.push_back(sp.failureLoad);
             }
         }
-        data.cal.features = data.curves ? summarise(calCurves, s_.statistics)
-                                        : summariseFailureLoads(data.cal.loads, s_.statistics);
-        data.held.features = data.curves ? summarise(heldCurves, s_.statistics)
-                                         : summariseFailureLoads(data.held.loads, s_.statistics);
+        for (Half* h : {&data.cal, &data.held})
+            h->features = data.curves ? summarise(h->curves, s_.statistics)
+                                      : summariseFailureLoads(h->loads, s_.statistics);
         std::vector<int> wanted = s_.requestedFeatures;
         if (wanted.empty())
             for (int f = 0; f < nFeatures; ++f) wanted.push_back(f);
@@ -125,6 +127,15 @@ void Analysis::splitMeasurements()
         }
         cond_.push_back(std::move(data));
     }
+}
+
+// The measured halves summarised again (after a switch to robust statistics).
+void Analysis::summariseMeasured()
+{
+    for (ConditionData& data : cond_)
+        for (Half* h : {&data.cal, &data.held})
+            h->features = data.curves ? summarise(h->curves, s_.statistics)
+                                      : summariseFailureLoads(h->loads, s_.statistics);
 }
 
 void Analysis::readBaselineValues()
@@ -192,7 +203,17 @@ ExplainOutcome Analysis::execute()
     readBaselineValues();
     describeStudy();
     writeEffectTemplates();
-    // 1. The baseline as the case has it, and its scatter over the seeds.
+    // The set-up before any fit: the specimens' dimensions against the model case's.
+    checkGeometry(out);
+    // 1. The baseline as the case has it, and its scatter over the seeds; odd specimens
+    // and members first (robust statistics, or no conclusion).
+    base0_ = evaluate(theta0_, "baseline");
+    if (!checkOddMembers(out)) {
+        out.simulations = simulations_;
+        say(out.sentence.substr(std::string("explainGap: ").size()));
+        writeResult(out, -1);
+        return out;
+    }
     evaluateBaseline();
     // 2. Sensitivities: baseline parameters by a relative step, effects by their probe.
     probeSensitivities();
@@ -213,8 +234,9 @@ ExplainOutcome Analysis::execute()
     } else {
         // 5. Confirm the significant candidates by a joint refit, judged on the held-out half.
         const std::vector<int> candidates = confirmCandidates(order, baseline, out, fits);
-        bestEffect = decideVerdict(candidates, out);
+        bestEffect = decideVerdict(candidates, fits, out);
     }
+    if (!out.geometryFinding.empty()) out.sentence += " " + out.geometryFinding;
     out.simulations = simulations_;
     say(out.sentence.substr(std::string("explainGap: ").size()));
     writeOutputs(out, baseline, bestEffect >= 0 ? &fits[static_cast<std::size_t>(bestEffect)] : nullptr,

@@ -16,9 +16,11 @@ namespace rockfrac::explain {
 
 enum class Verdict {
     noGapBeyondScatter,  // the baseline, re-fitted, is within the model's own scatter
-    explained,           // one effect (or one best of a kept set) explains the gap
+    explained,           // one effect explains the gap: its held-out errors are within the scatter
+    partlyExplained,     // one effect closes part of the gap; the held-out errors still exceed the scatter
     indistinguishable,   // two or more effects explain it equally and the data cannot tell them apart
-    unexplained          // the gap is real and no effect of the library closes it
+    unexplained,         // the gap is real and no effect of the library closes it
+    inconclusive         // too many specimens (or model members) fail differently from the rest
 };
 const char* verdictName(Verdict v);
 
@@ -40,6 +42,17 @@ struct ScreenedEffect {
     double reduction = 0.0;   // 1 - heldOutGap / baseline's
     double aic = 0.0;         // calibration half
     bool kept = false;
+    bool converged = false;                              // the joint refit met its convergence criterion
+    int refitSteps = 0;                                  // simulated Gauss-Newton steps of the joint refit
+    double heldOutChiSquare = 0.0, heldOutPValue = 1.0;  // the absolute test on the held-out half
+};
+
+// A specimen or model member whose failure peak is far from its set's median (outliers.hpp).
+struct OddMember {
+    std::string condition;  // "" for a study of one condition
+    bool measured = true;   // false: a model member (Voronoi seed) of the baseline
+    std::string id;         // specimen id or seed
+    double peak = 0.0, ratio = 0.0;
 };
 
 struct ExplainOutcome {
@@ -51,6 +64,11 @@ struct ExplainOutcome {
     double baselineChiSquare = 0.0, baselinePValue = 1.0;
     double baselineHeldOutGap = 0.0;
     std::vector<ScreenedEffect> screened;
+    std::vector<OddMember> oddMembers;
+    bool robustStatistics = false;              // switched to medians because of odd members
+    std::vector<std::string> geometryMismatch;  // "diameter", ...: beyond geometryTolerance
+    std::string geometryFinding;                // the sentence on it ("" without a mismatch)
+    std::vector<std::string> remaining;         // partlyExplained: "peakForce 3.6", ...
     int simulations = 0;
 };
 

@@ -9,8 +9,14 @@
 
 namespace rockfrac::explain::detail {
 
+// The joint refit of an effect with the baseline runs to convergence: a step below 5 % of
+// every parameter's probe, or a chi-square gain below 0.1 (a tenth of one degree of freedom's
+// expectation), within 8 simulated steps; after two failed steps, when another is expected to
+// gain less than 0.5.
+constexpr RefitControl jointRefit{8, 0.05, 0.1, 0.5};
+
 Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, const std::string& label,
-                              const Fit* previous)
+                              const Fit* previous, RefitControl control)
 {
     // Gauss–Newton in coordinates scaled by each parameter's probe, with Broyden's rank-one
     // update of the sensitivities after every simulated point: the probes give secants at the
@@ -38,9 +44,23 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
     };
     if (previous) broyden(*previous, start);
     Fit best = start;
-    int worse = 0;
-    for (int iteration = 1; iteration <= 3 && worse < 2; ++iteration) {
-        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(residual(best.model, false, sigmaCal_));
+    best.converged = false;
+    best.steps = 0;
+    int worse = 0, steps = 0;
+    std::string stopped = "the cap of " + std::to_string(control.maxSteps) + " steps";
+    bool converged = false;
+    while (steps < control.maxSteps) {
+        const Eigen::VectorXd r = residual(best.model, false, sigmaCal_);
+        const Eigen::VectorXd step = A.colPivHouseholderQr().solve(r);
+        if (worse >= 2) {
+            // At the seeds' noise floor when the sensitivities, updated by the failed steps,
+            // expect next to nothing from another step.
+            const double expected = r.squaredNorm() - (r - A * step).squaredNorm();
+            converged = expected < control.expectedGainTolerance;
+            stopped = "two steps in a row did not lower chi-square; another would gain " +
+                      format(expected, 2) + " by the linearised fit";
+            break;
+        }
         std::vector<double> next = best.values;
         for (int k = 0; k < n; ++k)
             next[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])] += step[k] * scale[k];
@@ -48,29 +68,45 @@ Analysis::Fit Analysis::refit(const std::vector<int>& free, const Fit& start, co
         bool moves = false;
         for (int k = 0; k < n; ++k) {
             const std::size_t j = static_cast<std::size_t>(free[static_cast<std::size_t>(k)]);
-            moves = moves || std::fabs(next[j] - best.values[j]) > 1e-3 * scale[k];
+            moves = moves || std::fabs(next[j] - best.values[j]) > control.stepTolerance * scale[k];
         }
-        if (!moves) break;
+        if (!moves) {
+            converged = true;
+            stopped = "the next step is below " + format(control.stepTolerance, 2) + " of every probe";
+            break;
+        }
+        ++steps;
         Fit trial;
         trial.values = next;
         try {
-            trial.runs = evaluate(next, label + "-" + std::to_string(iteration));
+            trial.runs = evaluate(next, label + "-" + std::to_string(steps));
         } catch (const UserError& error) {
-            say("  " + label + ": step " + std::to_string(iteration) +
+            say("  " + label + ": step " + std::to_string(steps) +
                 " not taken, its runs failed: " + error.what());
+            stopped = "the runs of step " + std::to_string(steps) + " failed";
             break;
         }
         trial.model = summary(trial.runs);
         trial.chi = chiCal(trial.model);
         broyden(best, trial);
         if (trial.chi < best.chi) {
+            const double gain = best.chi - trial.chi;
             best = std::move(trial);
             worse = 0;
+            if (gain < control.chiTolerance) {
+                converged = true;
+                stopped = "chi-square fell by less than " + format(control.chiTolerance, 2);
+                break;
+            }
         } else {
             ++worse;
         }
     }
+    best.converged = converged;
+    best.steps = steps;
+    best.stopped = stopped;
     const Eigen::MatrixXd unscaled = A * scale.cwiseInverse().asDiagonal();
+    best.sensitivities = unscaled;
     best.covariance = (unscaled.transpose() * unscaled).completeOrthogonalDecomposition().pseudoInverse();
     return best;
 }
@@ -117,7 +153,9 @@ bool Analysis::refitWithEffect(int e, const Fit& baseline, const ScreenedEffect&
         const Fit* previous = &baseline;
         std::vector<Fit> tried;  // the scan's points, when there is a scan
         if (from.chi >= baseline.chi) previous = scanRange(e, baseline, se.name, from, tried);
-        fit = refit(free, from, "fit-" + se.name, previous);
+        fit = refit(free, from, "fit-" + se.name, previous, jointRefit);
+        say("  refit " + se.name + ": " + (fit.converged ? "converged" : "did not converge") + " after " +
+            std::to_string(fit.steps) + " Gauss-Newton steps (" + fit.stopped + ")");
     } catch (const UserError& error) {
         say("  refit " + se.name + ": not confirmed, its runs failed: " + error.what());
         return false;
@@ -191,6 +229,8 @@ void Analysis::judgeRefit(int e, const Fit& fit, double aicBaseline, const Expla
                           ScreenedEffect& se)
 {
     se.confirmed = true;
+    se.converged = fit.converged;
+    se.refitSteps = fit.steps;
     se.value = fit.values[static_cast<std::size_t>(nb_ + e)];
     const double sd = std::sqrt(std::max(0.0, fit.covariance(nb_, nb_)));
     se.intervalLow = std::max(parameter(nb_ + e).low, se.value - 1.645 * sd);

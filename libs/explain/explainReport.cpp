@@ -158,8 +158,25 @@ void Analysis::writeResult(const ExplainOutcome& out, int effectIndex) const
             const auto& se = out.screened[static_cast<std::size_t>(effectIndex)];
             o << "value              " << format(se.value, 6) << ";\ninterval           ("
               << format(se.intervalLow, 6) << " " << format(se.intervalHigh, 6) << ");\nheldOutGap         "
-              << format(se.heldOutGap, 6) << ";\nreduction          " << format(se.reduction, 6) << ";\n";
+              << format(se.heldOutGap, 6) << ";\nreduction          " << format(se.reduction, 6) << ";\n"
+              << "heldOutChiSquare   " << format(se.heldOutChiSquare, 6) << ";\nheldOutPValue      "
+              << format(se.heldOutPValue, 6) << ";\nrefitConverged     " << (se.converged ? "yes" : "no")
+              << ";\n";
         }
+        auto list = [&](const char* key, const std::vector<std::string>& words) {
+            o << key << " (";
+            for (std::size_t i = 0; i < words.size(); ++i) o << (i ? " " : "") << "\"" << words[i] << "\"";
+            o << ");\n";
+        };
+        list("remaining         ", out.remaining);
+        std::vector<std::string> oddSpecimens, oddMembers;
+        for (const OddMember& m : out.oddMembers)
+            (m.measured ? oddSpecimens : oddMembers)
+                .push_back((m.condition.empty() ? "" : m.condition + ":") + m.id);
+        list("oddSpecimens      ", oddSpecimens);
+        list("oddModelMembers   ", oddMembers);
+        o << "robustStatistics   " << (out.robustStatistics ? "yes" : "no") << ";\n";
+        list("geometryMismatch  ", out.geometryMismatch);
         o << "simulations        " << out.simulations << ";\n";
     });
     writeFileAtomically(dir / "explainGap.report", [&](std::ostream& o) {

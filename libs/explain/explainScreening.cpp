@@ -14,8 +14,7 @@ namespace rockfrac::explain::detail {
 // 1. The baseline as the case has it, and its scatter over the seeds.
 void Analysis::evaluateBaseline()
 {
-    base0_ = evaluate(theta0_, "baseline");
-    model0_ = summary(base0_);
+    model0_ = summary(base0_);  // base0_: run by execute() before the check of odd members
     for (const Observed& o : obs_) {
         const double model = model0_[static_cast<std::size_t>(o.condition)].standardError[o.feature];
         sigmaCal_.push_back(std::hypot(model, half(o, false).features.standardError[o.feature]));
@@ -120,7 +119,10 @@ Analysis::Fit Analysis::refitBaseline(ExplainOutcome& out, std::string& fitted)
     say(std::string(nb_ > 0 ? "baseline re-fitted (" : "baseline (") + fitted + "): chi-square " +
         format(baseline.chi) + " on " + std::to_string(dof) +
         " degrees of freedom, p = " + format(out.baselinePValue, 3) + "; held-out gap " +
-        format(out.baselineHeldOutGap, 3) + " (RMS of the feature errors in standard errors)");
+        format(out.baselineHeldOutGap, 3) + " (RMS of the feature errors in standard errors)" +
+        (nb_ > 0 ? std::string(baseline.converged ? "; converged" : "; not converged") + " after " +
+                       std::to_string(baseline.steps) + " steps (" + baseline.stopped + ")"
+                 : std::string()));
     return baseline;
 }
 

@@ -5,11 +5,13 @@
 #include <cmath>
 
 #include "effects/modelEffect.hpp"
+#include "explain/chiSquare.hpp"
 #include "explain/explainAnalysis.hpp"
 
 namespace rockfrac::explain::detail {
 
-int Analysis::decideVerdict(const std::vector<int>& candidates, ExplainOutcome& out)
+int Analysis::decideVerdict(const std::vector<int>& candidates, const std::vector<Fit>& fits,
+                            ExplainOutcome& out)
 {
     std::vector<int> kept;
     for (int e : candidates)
@@ -60,20 +62,86 @@ int Analysis::decideVerdict(const std::vector<int>& candidates, ExplainOutcome& 
             rivals.push_back(e);
     }
     twins.insert(twins.end(), rivals.begin(), rivals.end());
-    const ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
     if (!twins.empty()) {
         describeIndistinguishable(top, twins, rivals, out);
         return -1;
     }
-    out.verdict = Verdict::explained;
+    testAbsolutely(top, fits[static_cast<std::size_t>(top)], out);
+    return top;
+}
+
+// The absolute test after the relative one: the kept effect explains the gap only when the
+// augmented model's held-out feature errors are consistent with the scatter (chi-square on
+// as many degrees of freedom as features, at the study's significance); otherwise it closes
+// part of it, and the sentence says what remains where.
+void Analysis::testAbsolutely(int top, const Fit& fit, ExplainOutcome& out)
+{
+    ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
+    // The held-out errors carry the held-out specimens' and the model's scatter (sigmaHeld_)
+    // and the fitted parameters' uncertainty, J C J^T (C their covariance from the fit on the
+    // other half): chi-square r^T S^-1 r with S = D + J C J^T in whitened units (D below), and
+    // each feature's error named in its own standard errors r_i / sqrt(S_ii).
+    // J: the refit's own sensitivities (Broyden-updated along its path), whitened for the held-out half.
+    const int m = static_cast<int>(obs_.size());
+    Eigen::MatrixXd J = fit.sensitivities;
+    for (int i = 0; i < m; ++i)
+        J.row(i) *= sigmaCal_[static_cast<std::size_t>(i)] / sigmaHeld_[static_cast<std::size_t>(i)];
+    // A feature on which the two measured halves disagree by d > 1 of their standard errors has
+    // more scatter than its standard errors say (heavy tails: a rock that slides or not): its
+    // variance is taken d^2 times as large, so that the test does not blame the model for it.
+    Eigen::VectorXd inflation = Eigen::VectorXd::Ones(m);
+    for (int i = 0; i < m; ++i) {
+        const Observed& o = obs_[static_cast<std::size_t>(i)];
+        const FeatureSummary &cal = half(o, false).features, &held = half(o, true).features;
+        const double d =
+            (cal.value[o.feature] - held.value[o.feature]) /
+            std::max(std::hypot(cal.standardError[o.feature], held.standardError[o.feature]), 1e-300);
+        inflation[i] = std::max(1.0, d * d);
+        if (std::fabs(d) > 2)
+            say("  absolute test: the measured halves disagree on " + label(o) + " by " +
+                format(std::fabs(d), 2) + " standard errors; its scatter is taken " +
+                format(std::fabs(d), 2) + " times as large");
+    }
+    const Eigen::MatrixXd S = Eigen::MatrixXd(inflation.asDiagonal()) + J * fit.covariance * J.transpose();
+    Eigen::VectorXd r = residual(fit.model, true, sigmaHeld_);
+    const double chi = r.dot(S.ldlt().solve(r));
+    for (int i = 0; i < m; ++i) r[i] /= std::sqrt(S(i, i));
+    const HeldOutTest test =
+        heldOutTest(std::vector<double>(r.data(), r.data() + r.size()), s_.significance, chi);
+    t.heldOutChiSquare = test.chiSquare;
+    t.heldOutPValue = test.pValue;
     out.effect = t.name;
     const EffectDescriptor& d = findEffect(t.name, "");
-    out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics + "): " + d.parameter +
-                   " = " + format(t.value, 3) + unitSuffix(d.unit) + " (90 % interval " +
-                   format(t.intervalLow, 3) + " to " + format(t.intervalHigh, 3) +
-                   "); the held-out gap falls by " + format(100 * t.reduction, 3) + " % (from " +
-                   format(out.baselineHeldOutGap, 3) + " to " + format(t.heldOutGap, 3) + ").";
-    return top;
+    const std::string fitted = d.parameter + " = " + format(t.value, 3) + unitSuffix(d.unit) +
+                               " (90 % interval " + format(t.intervalLow, 3) + " to " +
+                               format(t.intervalHigh, 3) + ")";
+    const std::string absolute = "held-out chi-square " + format(test.chiSquare, 3) + " on " +
+                                 std::to_string(test.degreesOfFreedom) +
+                                 " features, p = " + format(test.pValue, 3);
+    const std::string convergence =
+        t.converged ? std::string()
+                    : " The joint refit did not converge in " + std::to_string(t.refitSteps) + " steps.";
+    say("  absolute test of " + t.name + " on the held-out specimens: " + absolute +
+        (test.consistent ? ": consistent with the scatter" : ": beyond the scatter"));
+    if (test.consistent) {
+        out.verdict = Verdict::explained;
+        out.sentence = "explainGap: the gap is explained by " + t.name + " (" + d.physics + "): " + fitted +
+                       "; the held-out gap falls by " + format(100 * t.reduction, 3) + " % (from " +
+                       format(out.baselineHeldOutGap, 3) + " to " + format(t.heldOutGap, 3) +
+                       ") and what is left is within the scatter (" + absolute + ")." + convergence;
+        return;
+    }
+    out.verdict = Verdict::partlyExplained;
+    std::string where;
+    for (std::size_t k = 0; k < test.remaining.size(); ++k) {
+        const std::size_t i = test.remaining[k];
+        out.remaining.push_back(label(obs_[i]) + " " + format(r[static_cast<int>(i)], 3));
+        where += (k ? ", " : "") + format(std::fabs(r[static_cast<int>(i)]), 2) +
+                 (k ? " in " : " standard errors remain in ") + label(obs_[i]);
+    }
+    out.sentence = "explainGap: partly explained: " + t.name + " (" + d.physics + ") closes " +
+                   format(100 * t.reduction, 3) + " % of the held-out gap (" + fitted + "), " + where + " (" +
+                   absolute + "): the model misses something else as well." + convergence;
 }
 
 // Two or more kept (or rival) effects the data cannot choose between: their names, the

@@ -26,6 +26,27 @@ double gaussian(std::uint64_t seed, std::uint64_t stream, std::uint64_t counter)
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
 }
 
+// The specimens' dimensions as a lab reports them, from the prepared model case's
+// geometryProperties: a disc's diameter and thickness, another shape's volume and equivalent
+// diameter (the measurements' 'geometry' defaults); "" when the file is missing.
+std::string geometryEntries(const fs::path& properties)
+{
+    if (!fs::exists(properties)) return "";
+    const Dictionary d = Dictionary::readFile(properties);
+    std::ostringstream o;
+    o << std::setprecision(10) << "geometry\n{\n";
+    if (d.isDict("disc") && d.found("type") && d.get<std::string>("type") == "disc") {
+        const Dictionary& disc = d.subDict("disc");
+        o << "    diameter    [m] " << disc.getScalar("diameter", Bounds::positive()) << ";\n"
+          << "    thickness   [m] " << disc.getScalar("thickness", Bounds::positive()) << ";\n";
+    } else {
+        o << "    volume      [m^3] " << d.getScalar("volume", Bounds::positive()) << ";\n"
+          << "    equivalentDiameter [m] " << d.getScalar("equivalentDiameter", Bounds::positive()) << ";\n";
+    }
+    o << "}\n\n";
+    return o.str();
+}
+
 }  // namespace
 
 TwinOutcome makeTwinData(const TwinStudy& s)
@@ -64,7 +85,7 @@ TwinOutcome makeTwinData(const TwinStudy& s)
           << "// the study's hiddenLabel, not here: the analysis is blind.\n\n"
           << "test        BDT;\nmaterial    " << s.material
           << ";\nreference   \"twin data (makeTwinData)\";\n\n"
-          << "specimens\n{\n"
+          << geometryEntries(study.templateDirectory() / "constant/geometryProperties") << "specimens\n{\n"
           << specimens.str() << "}\n";
     });
     const fs::path label = s.directory / "hiddenLabel";
