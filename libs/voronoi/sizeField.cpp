@@ -79,10 +79,12 @@ SizeRegion readRegion(const Dictionary& r, const std::string& name, double baseS
     region.size = r.getScalar("size", Bounds::positive());
     if (region.size < minimumSize)
         throw UserError(r.location("size").str() + ": " + where + "/size " + mm(region.size) +
-                        " is below the smallest allowed cell, " + mm(minimumSize) +
-                        " (2 x dilationFraction x the base size " + mm(baseSize) +
-                        ": a smaller cell is thinner than its contact shell); give a size of at least " +
-                        mm(minimumSize) + " or a smaller dilationFraction");
+                        " is below the smallest allowed cell, " + mm(minimumSize) + " (" +
+                        formatNumber(smallestSizeInDilationRadii) + " x dilationFraction x the base size " +
+                        mm(baseSize) +
+                        ": finer cells are too small for their dilation radius and the DEM run " +
+                        "fails at its first step); give a size of at least " + mm(minimumSize) +
+                        " or a smaller dilationFraction");
     if (region.size >= baseSize)
         throw UserError(r.location("size").str() + ": " + where + "/size " + mm(region.size) +
                         " is not below the base size " + mm(baseSize) +

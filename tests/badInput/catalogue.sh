@@ -172,10 +172,10 @@ badCase sizeFieldTooFine meshed "voronoiMeshDict" "below the smallest allowed ce
 $sizeFieldFn; sizeField 1.3 "0 0 0" 0.2e-3
 SETUP
 badCase sizeFieldOutside meshed "voronoiMeshDict" "outside the specimen's bounding box" voronoiMesh -case . <<SETUP
-$sizeFieldFn; sizeField 1.3 "0 0 1" 2e-3
+$sizeFieldFn; sizeField 1.3 "0 0 1" 3e-3
 SETUP
 badCase sizeFieldGradingOne meshed "voronoiMeshDict" "not in (1, 2]" voronoiMesh -case . <<SETUP
-$sizeFieldFn; sizeField 1 "0 0 0" 2e-3
+$sizeFieldFn; sizeField 1 "0 0 0" 3e-3
 SETUP
 badCase hullZeroNormal meshed "geometryProperties" "zero or non-finite normal" voronoiMesh -case . <<'SETUP'
 cat > constant/geometryProperties <<D

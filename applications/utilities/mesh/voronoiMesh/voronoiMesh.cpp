@@ -48,15 +48,16 @@ struct MeshRequest {
 };
 
 // The optional graded size field: its base size is that of the uniform request (V / nCells or
-// mesoConstant), its smallest allowed size twice the dilation radius of the base cells.
+// mesoConstant), its smallest allowed size a few dilation radii of the base cells.
 void readSizeFieldRequest(const Dictionary& d, const Domain& domain, MeshRequest& r)
 {
     r.baseCells = r.nCells;
     if (!d.found("sizeField")) return;
     const double baseVolume = domain.volume() / r.nCells;
     const double baseSize = equivalentDiameter(baseVolume);
-    r.sizeField = readSizeField(d.subDict("sizeField"), baseSize, 2.0 * r.dilationFraction * baseSize,
-                                domain.boundingBox());
+    r.sizeField =
+        readSizeField(d.subDict("sizeField"), baseSize,
+                      smallestSizeInDilationRadii * r.dilationFraction * baseSize, domain.boundingBox());
     r.nCells = gradedCellCount(domain, *r.sizeField, baseVolume);
 }
 
