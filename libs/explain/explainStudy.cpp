@@ -9,6 +9,7 @@
 #include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "effects/modelEffect.hpp"
+#include "explain/effectPairs.hpp"
 #include "explain/responseFeatures.hpp"
 
 namespace rockfrac::explain {
@@ -146,7 +147,8 @@ const std::vector<std::string>& explainGapDictEntries()
                                                      "response",
                                                      "heldOut",
                                                      "minimumGapReduction",
-                                                     "significance"};
+                                                     "significance",
+                                                     "pairs"};
     return entries;
 }
 
@@ -297,6 +299,19 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     s.heldOutFraction = dict.getScalarOrDefault("heldOut", 0.5, Bounds::open(0, 1));
     s.minimumGapReduction = dict.getScalarOrDefault("minimumGapReduction", 0.3, Bounds::open(0, 1));
     s.significance = dict.getScalarOrDefault("significance", 0.01, Bounds::open(0, 0.5));
+    if (dict.found("pairs")) {
+        const std::string pairs = dict.get<std::string>("pairs");
+        if (pairs == "off")
+            s.maxPairs = 0;
+        else if (pairs.size() == 1 && pairs[0] >= '0' && pairs[0] <= '0' + maximumPairs)
+            s.maxPairs = pairs[0] - '0';
+        else
+            throw UserError(dict.location("pairs").str() + ": pairs '" + pairs +
+                            "' is not known; give the most pairs of effects to refit when no single effect "
+                            "passes the absolute test, 0 to " +
+                            std::to_string(maximumPairs) +
+                            " (each up to 9 evaluations of every seed), or off");
+    }
     return s;
 }
 
