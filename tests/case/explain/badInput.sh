@@ -54,8 +54,11 @@ expectUserError "tied entry 'bad' must be a sub-dictionary" explainGap -case stu
 cp keep study/system/explainGapDict
 
 # pairs: a count 0-3 or off.
-echo "pairs 5;" >> study/system/explainGapDict
-expectUserError "pairs '5' is not known; give the most pairs of effects to refit" explainGap -case study
+sed -i "s/^pairs .*/pairs 5;/" study/system/explainGapDict
+expectUserError "pairs" explainGap -case study
+cp keep study/system/explainGapDict
+sed -i "s/^pairs .*/pairs all;/" study/system/explainGapDict
+expectUserError "pairs is not a count nor off; give the most pairs of effects to refit" explainGap -case study
 cp keep study/system/explainGapDict
 
 printf 'FoamFile { format ascii; class dictionary; object modelEffects; }\nseatingGap { depth 1e-5; }\n' \
