@@ -385,7 +385,7 @@ private:
     std::vector<WallState> walls_;
     std::vector<Vec3> triangle_vertices_;           // 3 per triangle, each wall's own frame
     std::vector<std::uint16_t> triangle_features_;  // ridges and convex corners (surfaceFeatures.hpp)
-    std::vector<TrianglePrism> triangle_prisms_;  // distance bounds, each wall's own frame
+    std::vector<TrianglePrism> triangle_prisms_;    // distance bounds, each wall's own frame
     std::vector<TriangleGrid> triangle_grids_;      // per wall (empty for plates)
 
     // Per-step caches.

@@ -52,6 +52,23 @@ public:
         return false;
     }
 
+    // True if a point s of `points` lies closer than pairDistance(s) to p (pairDistance(s) <=
+    // the cell size: the field's local pruning distance of the pair).
+    template <class PairDistance>
+    bool hasPointCloserThan(const Vec3& p, const std::vector<Vec3>& points, PairDistance pairDistance) const
+    {
+        int c[3];
+        cellOf(p, c);
+        for (int k = std::max(0, c[2] - 1); k <= std::min(dims_[2] - 1, c[2] + 1); ++k)
+            for (int j = std::max(0, c[1] - 1); j <= std::min(dims_[1] - 1, c[1] + 1); ++j)
+                for (int i = std::max(0, c[0] - 1); i <= std::min(dims_[0] - 1, c[0] + 1); ++i)
+                    for (int s = head_[index(i, j, k)]; s >= 0; s = next_[s]) {
+                        const double d = pairDistance(s);
+                        if (norm2(points[s] - p) < d * d) return true;
+                    }
+        return false;
+    }
+
     // Register points[id] == p (ids must be inserted as 0, 1, 2, ...).
     void insert(int id, const Vec3& p)
     {
@@ -156,25 +173,38 @@ void orderAlongMortonCurve(std::vector<Vec3>& points)
     points = std::move(ordered);
 }
 
-std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed)
+namespace {
+
+// Random sequential addition: throws uniform in the box, kept inside the domain and, with a
+// field, thinned to the density (base / h)^3 (one more draw per throw inside); a throw closer
+// than the pruning distance to an earlier seed is rejected. Without a field the draws and tests
+// are those of the uniform seeding (meshes reproducible from the seed across versions).
+std::vector<Vec3> throwSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
+                             const SizeField* field)
 {
     checkArguments(nCells, pruningDistance);
     const BoundingBox& box = domain.boundingBox();
 
-    // Cells at least pd wide so the 27-cell neighbourhood covers pd, and at
-    // least half the mean seed spacing so a tiny pd does not make a huge grid.
+    // Cells at least pd wide so the 27-cell neighbourhood covers pd (with a field every pair's
+    // distance is at most pd: sizes never exceed the base), and at least half the mean seed
+    // spacing so a tiny pd does not make a huge grid.
     const double meanSpacing = std::cbrt(box.volume() / nCells);
     SeedGrid grid(box, std::max(pruningDistance, 0.5 * meanSpacing), nCells);
 
-    // Throws outside the domain are free; bound them by the volume ratio so a
-    // thin slanted domain still terminates.
+    // Throws outside the domain are free; bound them by the volume ratio so a thin slanted
+    // domain still terminates. A field keeps a throw with probability (smallest / h)^3 >=
+    // (smallest / base)^3: the bound grows by that worst case.
+    const double finest = field ? field->smallest() / field->baseSize : 1.0;
     const double insideFraction = std::max(domain.volume() / box.volume(), 1e-6);
     const long maxThrowsInside = throwBudget(nCells);
-    const double maxThrows = maxThrowsInside / insideFraction * 10.0;
+    double maxThrows = maxThrowsInside / insideFraction * 10.0;
+    if (field) maxThrows /= finest * finest * finest;
 
     RandomStream random(seed);
     std::vector<Vec3> seeds;
+    std::vector<double> sizes;  // the field at each seed (with a field)
     seeds.reserve(nCells);
+    const double pdPerSize = field ? pruningDistance / field->baseSize : 0.0;
     long rejectedInARow = 0, throwsInside = 0;
     for (double throws = 0; static_cast<int>(seeds.size()) < nCells; throws += 1.0) {
         if (rejectedInARow >= maxConsecutiveRejections || throwsInside >= maxThrowsInside ||
@@ -182,16 +212,41 @@ std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDis
             throwDoesNotFit(domain, nCells, pruningDistance, static_cast<int>(seeds.size()));
         const Vec3 p = uniformPointInBox(random, box);
         if (!domain.contains(p)) continue;
+        const double h = field ? field->size(p) : 0.0;
+        if (field) {
+            const double ratio = field->smallest() / h;
+            if (random.uniform() >= ratio * ratio * ratio) continue;  // thinned to (base / h)^3
+        }
         ++throwsInside;
-        if (pruningDistance > 0.0 && grid.hasPointCloserThan(p, pruningDistance, seeds)) {
+        // With a field, the pair's pruning distance is pd at the mean of the two sizes
+        // (symmetric; with the grading bound close seeds differ by less than the grading).
+        auto pairDistance = [&](int s) { return pdPerSize * 0.5 * (h + sizes[s]); };
+        const bool tooClose =
+            pruningDistance > 0.0 && (field ? grid.hasPointCloserThan(p, seeds, pairDistance)
+                                            : grid.hasPointCloserThan(p, pruningDistance, seeds));
+        if (tooClose) {
             ++rejectedInARow;
             continue;
         }
         rejectedInARow = 0;
         grid.insert(static_cast<int>(seeds.size()), p);
         seeds.push_back(p);
+        if (field) sizes.push_back(h);
     }
     return seeds;
+}
+
+}  // namespace
+
+std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed)
+{
+    return throwSeeds(domain, nCells, pruningDistance, seed, nullptr);
+}
+
+std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
+                             const SizeField& field)
+{
+    return throwSeeds(domain, nCells, pruningDistance, seed, &field);
 }
 
 int cellCountFromMesoConstant(double domainVolume, double mesoConstant)

@@ -9,6 +9,7 @@
 
 #include "core/vec3.hpp"
 #include "voronoi/domain.hpp"
+#include "voronoi/sizeField.hpp"
 
 namespace rockfrac {
 
@@ -22,6 +23,12 @@ namespace rockfrac {
 // pruning distance that would fit nCells. Never loops forever, never returns
 // fewer points.
 std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed);
+
+// The same with a graded size field (sizeField.hpp): throws are thinned to the density
+// (base / h(x))^3, and two seeds are pruned closer than pruningDistance x the mean of their
+// sizes / base (pruningDistance applies at the base size). Deterministic in `seed`.
+std::vector<Vec3> placeSeeds(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
+                             const SizeField& field);
 
 // Reorder points along a Morton (Z-order) curve over their bounding box (21 bits per
 // axis, ties kept in their order). Cells numbered this way have their neighbours
@@ -38,8 +45,8 @@ int cellCountFromMesoConstant(double domainVolume, double mesoConstant);
 // The entries of system/voronoiMeshDict (voronoiMesh's readRequest).
 inline const std::vector<std::string>& voronoiMeshDictEntries()
 {
-    static const std::vector<std::string> entries = {"nCells", "mesoConstant",     "pruningDistance",
-                                                     "seed",   "dilationFraction", "cellOrder"};
+    static const std::vector<std::string> entries = {
+        "nCells", "mesoConstant", "pruningDistance", "seed", "dilationFraction", "cellOrder", "sizeField"};
     return entries;
 }
 

@@ -387,9 +387,10 @@ VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, dou
 }
 
 VoronoiMesh generateVoronoiMesh(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
-                                double dilationFraction, CellOrder order)
+                                double dilationFraction, CellOrder order, const SizeField* field)
 {
-    std::vector<Vec3> seeds = placeSeeds(domain, nCells, pruningDistance, seed);
+    std::vector<Vec3> seeds = field ? placeSeeds(domain, nCells, pruningDistance, seed, *field)
+                                    : placeSeeds(domain, nCells, pruningDistance, seed);
     if (order == CellOrder::morton) orderAlongMortonCurve(seeds);
     VoronoiMesh mesh = tessellate(domain, seeds, dilationFraction);
     mesh.seed = seed;

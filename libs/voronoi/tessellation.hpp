@@ -10,6 +10,7 @@
 
 #include "core/vec3.hpp"
 #include "voronoi/domain.hpp"
+#include "voronoi/sizeField.hpp"
 #include "voronoi/voronoiMesh.hpp"
 
 namespace rockfrac {
@@ -30,9 +31,12 @@ VoronoiMesh tessellate(const Domain& domain, const std::vector<Vec3>& seeds, dou
 // steps on large meshes, the same geometry).
 enum class CellOrder { seeding, morton };
 
-// placeSeeds then tessellate, recording the seed and pruning distance.
+// placeSeeds then tessellate, recording the seed and pruning distance. With a size field the
+// seeds follow it (placeSeeds' graded form; nCells from gradedCellCount); without one the
+// uniform seeding, unchanged.
 VoronoiMesh generateVoronoiMesh(const Domain& domain, int nCells, double pruningDistance, std::uint64_t seed,
-                                double dilationFraction = 0.1, CellOrder order = CellOrder::seeding);
+                                double dilationFraction = 0.1, CellOrder order = CellOrder::seeding,
+                                const SizeField* field = nullptr);
 
 // Mean cell size: the mean over cells of the volume-equivalent diameter
 // (6 V / pi)^(1/3) [m]. For the paper's 300-cell BDT disc (D 44.8 mm,

@@ -164,6 +164,19 @@ SETUP
 badCase unknownCellOrder meshed "voronoiMeshDict" "cellOrder" voronoiMesh -case . <<'SETUP'
 caseDict -case . system/voronoiMeshDict -entry cellOrder -add hilbert
 SETUP
+# Graded meshes (sizeField): a cell finer than its contact shell, a region off the specimen,
+# a grading that never returns to the base size. sizeField <grading> <point> <size>: one region.
+sizeFieldFn='sizeField() { printf "sizeField { grading %s; regions { r { type point; point (%s); size %s; } } }\n" \
+    "$1" "$2" "$3" >> system/voronoiMeshDict; }'
+badCase sizeFieldTooFine meshed "voronoiMeshDict" "below the smallest allowed cell" voronoiMesh -case . <<SETUP
+$sizeFieldFn; sizeField 1.3 "0 0 0" 0.2e-3
+SETUP
+badCase sizeFieldOutside meshed "voronoiMeshDict" "outside the specimen's bounding box" voronoiMesh -case . <<SETUP
+$sizeFieldFn; sizeField 1.3 "0 0 1" 3e-3
+SETUP
+badCase sizeFieldGradingOne meshed "voronoiMeshDict" "not in (1, 2]" voronoiMesh -case . <<SETUP
+$sizeFieldFn; sizeField 1 "0 0 0" 3e-3
+SETUP
 badCase hullZeroNormal meshed "geometryProperties" "zero or non-finite normal" voronoiMesh -case . <<'SETUP'
 cat > constant/geometryProperties <<D
 FoamFile { format ascii; class dictionary; object geometryProperties; }
