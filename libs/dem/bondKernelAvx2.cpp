@@ -10,7 +10,7 @@
 
 namespace rockfrac {
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__CUDACC__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
 #define RF_BOND_LANES 1
 #endif
 
