@@ -5,6 +5,7 @@
 #include "core/dictionary.hpp"
 #include "core/error.hpp"
 #include "core/selector.hpp"
+#include "dem/bondKernelAvx2.hpp"
 
 namespace rockfrac {
 
@@ -57,7 +58,17 @@ double VoronoiQnscBondLaw::energyFloor(double total_bond_area, int n_bonds, doub
 template <>
 void BondLawOf<VoronoiQnscLaw, VoronoiQnscParameters>::run(const BondKernelArgs& args) const
 {
-    runBondKernel<VoronoiQnscLaw>(args, coefficients_);
+    // The intact bonds four at a time where the CPU can (bit for bit the scalar kernel's result).
+    if (!args.only_interfaces && bondLanesEnabled())
+        runVoronoiQnscBondLanes(args, coefficients_);
+    else
+        runBondKernel<VoronoiQnscLaw>(args, coefficients_);
+}
+
+bool voronoiQnscInterfaceScalar(const BondKernelArgs& a, const VoronoiQnscLaw::Coefficients& c, int k,
+                                BondBlockSums& block)
+{
+    return bondInterfaceKernel<VoronoiQnscLaw>(a, c, k, block);
 }
 
 std::string VoronoiQnscBondLaw::describe() const

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "calibration/calibrationStudy.hpp"
+#include "explain/chiSquare.hpp"
 #include "explain/explainGap.hpp"
 #include "explain/pointRuns.hpp"
 
@@ -147,19 +148,32 @@ private:
     // explainVerdict.cpp: the verdict; returns the effect that explains the gap, or -1.
     int decideVerdict(const std::vector<int>& candidates, const std::vector<Fit>& fits, ExplainOutcome& out);
     void testAbsolutely(int top, const Fit& fit, ExplainOutcome& out);
+    // The absolute test of a fit on the held-out half; r gets each feature's error in its own
+    // standard errors.
+    HeldOutTest absoluteTest(const Fit& fit, Eigen::VectorXd& r);
+    bool halvesDisagreementSaid_ = false;  // the halves' disagreement is said once
     void describeIndistinguishable(int top, const std::vector<int>& twins, const std::vector<int>& rivals,
                                    ExplainOutcome& out);
     Eigen::VectorXd fullDirection(int e) const;
     int separatingRow(int top, int twin) const;
 
-    // explainReport.cpp: every output file.
-    void writeOutputs(const ExplainOutcome& outcome, const Fit& baseline, const Fit* effect, int effectIndex);
+    // explainPairs.cpp: when no single effect passes the absolute test, pairs of the
+    // top-ranked effects; true (with `pairFit` and out.pair) when one passes both tests.
+    bool screenPairs(const std::vector<int>& order, const Fit& baseline, const std::vector<Fit>& fits,
+                     ExplainOutcome& out, Fit& pairFit);
+    Fit refitPair(int a, int b, const Fit& baseline, const std::vector<Fit>& fits, const ExplainOutcome& out);
+
+    // explainReport.cpp: every output file; `effectIndices` the effects switched on in the
+    // augmented case (one, or a pair).
+    void writeOutputs(const ExplainOutcome& outcome, const Fit& baseline, const Fit* effect,
+                      const std::vector<int>& effectIndices);
     void writeGapTable(const Fit& baseline, const Summaries& after) const;
     void writeGapMetrics(const Fit& baseline, const Summaries& after,
                          const RunsPerCondition& afterRuns) const;
     void writeScreeningTable(const ExplainOutcome& out) const;
     void writeResult(const ExplainOutcome& out, int effectIndex) const;
-    void writeAugmentedCases(const ExplainOutcome& out, const Fit& effect, int effectIndex);
+    void writeAugmentedCases(const ExplainOutcome& out, const Fit& effect,
+                             const std::vector<int>& effectIndices);
     void drawResidualPlot(const Fit& baseline, const Summaries& after, const ExplainOutcome& out,
                           bool effectKept) const;
     void drawCurvePlot(std::size_t k, const Fit& baseline, const RunsPerCondition& afterRuns,

@@ -236,11 +236,25 @@ ExplainOutcome Analysis::execute()
         const std::vector<int> candidates = confirmCandidates(order, baseline, out, fits);
         bestEffect = decideVerdict(candidates, fits, out);
     }
+    // Pairs of the top-ranked effects when no single one passes the absolute test.
+    Fit pairFit;
+    std::vector<int> augmented;
+    if (bestEffect >= 0) augmented.push_back(bestEffect);
+    const Fit* effectFit = bestEffect >= 0 ? &fits[static_cast<std::size_t>(bestEffect)] : nullptr;
+    if (screenPairs(order, baseline, fits, out, pairFit)) {
+        const PairFit& p = out.pairs[static_cast<std::size_t>(out.namedPair)];
+        const auto index = [&](const std::string& name) {
+            return static_cast<int>(std::find(s_.effects.begin(), s_.effects.end(), name) -
+                                    s_.effects.begin());
+        };
+        augmented = {index(p.first), index(p.second)};
+        effectFit = &pairFit;
+        bestEffect = -1;
+    }
     if (!out.geometryFinding.empty()) out.sentence += " " + out.geometryFinding;
     out.simulations = simulations_;
     say(out.sentence.substr(std::string("explainGap: ").size()));
-    writeOutputs(out, baseline, bestEffect >= 0 ? &fits[static_cast<std::size_t>(bestEffect)] : nullptr,
-                 bestEffect);
+    writeOutputs(out, baseline, effectFit, augmented);
     return out;
 }
 

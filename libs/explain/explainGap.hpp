@@ -47,6 +47,19 @@ struct ScreenedEffect {
     double heldOutChiSquare = 0.0, heldOutPValue = 1.0;  // the absolute test on the held-out half
 };
 
+// A pair of effects refitted together with the baseline (docs/explainGap.md, "Pairs").
+struct PairFit {
+    std::string first, second;
+    double firstValue = 0.0, secondValue = 0.0;
+    double firstLow = 0.0, firstHigh = 0.0, secondLow = 0.0, secondHigh = 0.0;  // 90 % (linearised)
+    double chiSquare = 0.0, aic = 0.0;                                          // calibration half
+    double heldOutGap = 0.0, reduction = 0.0;
+    bool relative =
+        false;  // passes the relative test (held-out reduction, AIC below the baseline's and its members')
+    double heldOutChiSquare = 0.0, heldOutPValue = 1.0;  // the absolute test
+    bool converged = false;
+};
+
 // A specimen or model member whose failure peak is far from its set's median (outliers.hpp).
 struct OddMember {
     std::string condition;  // "" for a study of one condition
@@ -69,6 +82,9 @@ struct ExplainOutcome {
     std::vector<std::string> geometryMismatch;  // "diameter", ...: beyond geometryTolerance
     std::string geometryFinding;                // the sentence on it ("" without a mismatch)
     std::vector<std::string> remaining;         // partlyExplained: "peakForce 3.6", ...
+    std::vector<PairFit> pairs;                 // the pairs refitted (none unless no single effect passed)
+    int namedPair = -1;                         // the pair that explains the gap (index into pairs), or -1
+    int pairSimulations = 0;                    // the simulations the pairs took
     int simulations = 0;
 };
 

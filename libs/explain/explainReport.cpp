@@ -20,15 +20,16 @@ namespace rockfrac::explain::detail {
 namespace fs = std::filesystem;
 
 void Analysis::writeOutputs(const ExplainOutcome& out, const Fit& baseline, const Fit* effect,
-                            int effectIndex)
+                            const std::vector<int>& effectIndices)
 {
     const Summaries& after = effect ? effect->model : baseline.model;
     const RunsPerCondition& afterRuns = effect ? effect->runs : baseline.runs;
     writeGapTable(baseline, after);
     writeGapMetrics(baseline, after, afterRuns);
     writeScreeningTable(out);
-    writeResult(out, effectIndex);
-    if (effect) writeAugmentedCases(out, *effect, effectIndex);
+    // A single effect's value and interval go to the result; a pair's are in out.pairs.
+    writeResult(out, out.namedPair < 0 && !effectIndices.empty() ? effectIndices.front() : -1);
+    if (effect) writeAugmentedCases(out, *effect, effectIndices);
     // Plots: normalised residuals before/after, and the mean curves.
     try {
         drawResidualPlot(baseline, after, out, effect != nullptr);
@@ -169,6 +170,16 @@ void Analysis::writeResult(const ExplainOutcome& out, int effectIndex) const
             o << ");\n";
         };
         list("remaining         ", out.remaining);
+        if (out.namedPair >= 0) {
+            const PairFit& p = out.pairs[static_cast<std::size_t>(out.namedPair)];
+            o << "pair               (" << p.first << " " << p.second << ");\npairValues         ("
+              << format(p.firstValue, 6) << " " << format(p.secondValue, 6) << ");\nreduction          "
+              << format(p.reduction, 6) << ";\nheldOutChiSquare   " << format(p.heldOutChiSquare, 6)
+              << ";\nheldOutPValue      " << format(p.heldOutPValue, 6) << ";\nrefitConverged     "
+              << (p.converged ? "yes" : "no") << ";\n";
+        }
+        o << "pairsRefitted      " << out.pairs.size() << ";\npairSimulations    " << out.pairSimulations
+          << ";\n";
         std::vector<std::string> oddSpecimens, oddMembers;
         for (const OddMember& m : out.oddMembers)
             (m.measured ? oddSpecimens : oddMembers)
@@ -186,7 +197,8 @@ void Analysis::writeResult(const ExplainOutcome& out, int effectIndex) const
 
 // The augmented case: the effect switched on with its fitted size, the baseline re-fitted;
 // with several conditions one per condition (augmentedCase/<condition>).
-void Analysis::writeAugmentedCases(const ExplainOutcome& out, const Fit& effect, int effectIndex)
+void Analysis::writeAugmentedCases(const ExplainOutcome& out, const Fit& effect,
+                                   const std::vector<int>& effectIndices)
 {
     const fs::path dir = s_.directory;
     fs::remove_all(dir / "augmentedCase");
@@ -203,18 +215,20 @@ void Analysis::writeAugmentedCases(const ExplainOutcome& out, const Fit& effect,
         }
         for (const auto& t : s_.tied)
             setEntryInFile(augmented / t.file, t.entry, formatNumber(t.factor * effect.values[t.parameter]));
-        const std::string& name = s_.effects[static_cast<std::size_t>(effectIndex)];
-        const EffectDescriptor& d = findEffect(name, "");
         writeFileAtomically(augmented / "constant/modelEffects", [&](std::ostream& o) {
             o << "FoamFile { format ascii; class dictionary; object modelEffects; }\n\n"
-              << "// Written by explainGap (" << s_.directory.filename().string() << "): " << d.physics
-              << ".\n"
-              << "// " << out.sentence << "\n"
-              << name << "\n{\n    " << d.parameter << " "
-              << formatNumber(effect.values[static_cast<std::size_t>(nb_ + effectIndex)]) << ";\n";
-            for (const auto& [entry, value] : s_.effectFixed[name])
-                o << "    " << entry << " " << value << ";\n";
-            o << "}\n";
+              << "// Written by explainGap (" << s_.directory.filename().string() << ").\n"
+              << "// " << out.sentence << "\n";
+            for (int e : effectIndices) {
+                const std::string& name = s_.effects[static_cast<std::size_t>(e)];
+                const EffectDescriptor& d = findEffect(name, "");
+                o << "// " << d.physics << ".\n"
+                  << name << "\n{\n    " << d.parameter << " "
+                  << formatNumber(effect.values[static_cast<std::size_t>(nb_ + e)]) << ";\n";
+                for (const auto& [entry, value] : s_.effectFixed[name])
+                    o << "    " << entry << " " << value << ";\n";
+                o << "}\n";
+            }
         });
     }
 }

@@ -1,5 +1,6 @@
 #include "explain/explainStudy.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -9,6 +10,7 @@
 #include "core/knownEntries.hpp"
 #include "core/textFile.hpp"
 #include "effects/modelEffect.hpp"
+#include "explain/effectPairs.hpp"
 #include "explain/responseFeatures.hpp"
 
 namespace rockfrac::explain {
@@ -146,7 +148,8 @@ const std::vector<std::string>& explainGapDictEntries()
                                                      "response",
                                                      "heldOut",
                                                      "minimumGapReduction",
-                                                     "significance"};
+                                                     "significance",
+                                                     "pairs"};
     return entries;
 }
 
@@ -297,6 +300,24 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     s.heldOutFraction = dict.getScalarOrDefault("heldOut", 0.5, Bounds::open(0, 1));
     s.minimumGapReduction = dict.getScalarOrDefault("minimumGapReduction", 0.3, Bounds::open(0, 1));
     s.significance = dict.getScalarOrDefault("significance", 0.01, Bounds::open(0, 0.5));
+    if (const Entry* pairs = dict.findEntry("pairs")) {
+        // A count 0 to maximumPairs, or the word off.
+        const std::string what =
+            "give the most pairs of effects to refit when no single effect passes the "
+            "absolute test, 0 to " +
+            std::to_string(maximumPairs) + " (each up to 9 evaluations of every seed), or off";
+        if (pairs->values.size() == 1 && pairs->values[0].isNumber()) {
+            const double n = dict.getScalarOrDefault("pairs", 3, Bounds::closed(0, maximumPairs));
+            if (n != std::floor(n))
+                throw UserError(dict.location("pairs").str() + ": pairs " + std::to_string(n) +
+                                " is no count; " + what);
+            s.maxPairs = static_cast<int>(n);
+        } else if (pairs->values.size() == 1 && dict.get<std::string>("pairs") == "off") {
+            s.maxPairs = 0;
+        } else {
+            throw UserError(dict.location("pairs").str() + ": pairs is not a count nor off; " + what);
+        }
+    }
     return s;
 }
 

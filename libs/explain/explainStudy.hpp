@@ -52,6 +52,9 @@ struct ExplainStudy {
     double heldOutFraction = 0.5;
     double minimumGapReduction = 0.3;
     double significance = 0.01;
+    // Pairs of the top-ranked effects refitted when no single effect passes the absolute test
+    // (explainGapDict `pairs`: a count 0-3, or off = 0)
+    int maxPairs = 3;
     double indistinguishableAic = 2.0;  // kept effects within this AIC of the best are not told apart
 
     // A calibration study over baseline + effect parameters, for the runCases helpers:

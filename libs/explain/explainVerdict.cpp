@@ -74,9 +74,8 @@ int Analysis::decideVerdict(const std::vector<int>& candidates, const std::vecto
 // augmented model's held-out feature errors are consistent with the scatter (chi-square on
 // as many degrees of freedom as features, at the study's significance); otherwise it closes
 // part of it, and the sentence says what remains where.
-void Analysis::testAbsolutely(int top, const Fit& fit, ExplainOutcome& out)
+HeldOutTest Analysis::absoluteTest(const Fit& fit, Eigen::VectorXd& r)
 {
-    ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
     // The held-out errors carry the held-out specimens' and the model's scatter (sigmaHeld_)
     // and the fitted parameters' uncertainty, J C J^T (C their covariance from the fit on the
     // other half): chi-square r^T S^-1 r with S = D + J C J^T in whitened units (D below), and
@@ -97,17 +96,28 @@ void Analysis::testAbsolutely(int top, const Fit& fit, ExplainOutcome& out)
             (cal.value[o.feature] - held.value[o.feature]) /
             std::max(std::hypot(cal.standardError[o.feature], held.standardError[o.feature]), 1e-300);
         inflation[i] = std::max(1.0, d * d);
-        if (std::fabs(d) > 2)
+        if (std::fabs(d) > 2 && !halvesDisagreementSaid_)
             say("  absolute test: the measured halves disagree on " + label(o) + " by " +
                 format(std::fabs(d), 2) + " standard errors; its scatter is taken " +
                 format(std::fabs(d), 2) + " times as large");
     }
+    halvesDisagreementSaid_ = true;
     const Eigen::MatrixXd S = Eigen::MatrixXd(inflation.asDiagonal()) + J * fit.covariance * J.transpose();
-    Eigen::VectorXd r = residual(fit.model, true, sigmaHeld_);
+    r = residual(fit.model, true, sigmaHeld_);
     const double chi = r.dot(S.ldlt().solve(r));
     for (int i = 0; i < m; ++i) r[i] /= std::sqrt(S(i, i));
-    const HeldOutTest test =
-        heldOutTest(std::vector<double>(r.data(), r.data() + r.size()), s_.significance, chi);
+    return heldOutTest(std::vector<double>(r.data(), r.data() + r.size()), s_.significance, chi);
+}
+
+// The absolute test after the relative one: the kept effect explains the gap only when the
+// augmented model's held-out feature errors are consistent with the scatter (chi-square on
+// as many degrees of freedom as features, at the study's significance); otherwise it closes
+// part of it, and the sentence says what remains where.
+void Analysis::testAbsolutely(int top, const Fit& fit, ExplainOutcome& out)
+{
+    ScreenedEffect& t = out.screened[static_cast<std::size_t>(top)];
+    Eigen::VectorXd r;
+    const HeldOutTest test = absoluteTest(fit, r);
     t.heldOutChiSquare = test.chiSquare;
     t.heldOutPValue = test.pValue;
     out.effect = t.name;

@@ -3,7 +3,8 @@
 # message naming the file and what to do, and exit code 1: too few specimens for
 # the held-out split, a curve without a load drop, an unknown effect, a missing
 # fixed entry of an effect, conditions beside a top-level case or with differently
-# calibrated cases, and an unknown effect in a case's constant/modelEffects.
+# calibrated cases, a pairs entry that is no count 0-3 nor off, and an unknown effect in a
+# case's constant/modelEffects.
 source "$(dirname "$0")/../caseTestFunctions"
 copyTutorial tutorials/explainGap "$work/t"
 cd "$work/t"
@@ -50,6 +51,14 @@ cp keep study/system/explainGapDict
 # A tied entry that is not a sub-dictionary (it crashed on a null pointer).
 sed -i 's/^    cohesion { entry bond/    bad 1;\n    cohesion { entry bond/' study/system/explainGapDict
 expectUserError "tied entry 'bad' must be a sub-dictionary" explainGap -case study
+cp keep study/system/explainGapDict
+
+# pairs: a count 0-3 or off.
+sed -i "s/^pairs .*/pairs 5;/" study/system/explainGapDict
+expectUserError "pairs" explainGap -case study
+cp keep study/system/explainGapDict
+sed -i "s/^pairs .*/pairs all;/" study/system/explainGapDict
+expectUserError "pairs is not a count nor off; give the most pairs of effects to refit" explainGap -case study
 cp keep study/system/explainGapDict
 
 printf 'FoamFile { format ascii; class dictionary; object modelEffects; }\nseatingGap { depth 1e-5; }\n' \
