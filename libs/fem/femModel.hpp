@@ -121,6 +121,8 @@ public:
     double stableTimeStep() const;
     // Added mass / physical mass from mass scaling (0 when off).
     double addedMassFraction() const { return addedMassFraction_; }
+    // Each element's density after mass scaling (kg/m^3; the rock's where not scaled).
+    const std::vector<double>& elementDensities() const { return elementDensity_; }
     StepStatus step(double dt);
 
     // ---- state --------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/knownEntries.hpp"
 #include "core/memoryLimit.hpp"
+#include "fem/addedMass.hpp"
 #include "fem/measurements.hpp"
 #include "femCase/femCase.hpp"
 #include "io/timeSeries.hpp"
@@ -634,6 +635,9 @@ void FeFractureRun::printSetup() const
         "added mass %.3g %%; mass damping %.4g 1/s\n",
         runTime.deltaT(), stableStep, runTime.endTime(), runTime.endStep(), mass,
         100 * model->addedMassFraction(), parameters.massDamping);
+    const std::string addedMass = fem::addedMassWarning(
+        fem::summariseAddedMass(*model, parameters.rock.density), parameters.massScalingTimeStep);
+    if (!addedMass.empty()) std::printf("%s\n", addedMass.c_str());
     if (loading.kind == FemLoading::Kind::plates)
         std::printf(
             "Plates: upper velocity (%g %g %g) m/s, lower (%g %g %g) m/s, friction %.3g/%.3g, start gap "

@@ -167,6 +167,42 @@ Specimen buildDisc(const Dictionary& d)
     return s;
 }
 
+// A scan must be closed; an open one whose vertices nearly coincide was exported unwelded.
+void checkClosed(const TriSurface& scan, const fs::path& file)
+{
+    const SurfaceCheck check = checkSurface(scan);
+    if (check.watertight()) return;
+    Vec3 lo = scan.points.empty() ? Vec3{} : scan.points[0], hi = lo;
+    for (const Vec3& p : scan.points)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    const double gap = 1e-6 * norm(hi - lo);
+    const int close = check.boundaryEdges > 0 ? nearDuplicateVertices(scan, gap) : 0;
+    char hint[240] = "";
+    if (close > 0)
+        std::snprintf(hint, sizeof(hint),
+                      "; %d vertices lie within %.3g (in the file's units) of another one without being "
+                      "the same point: merge close vertices (MeshLab's Merge Close Vertices)",
+                      close, gap);
+    throw UserError(file.string() + ": the scan is not a closed surface (" + check.reason() + hint +
+                    "); repair it (e.g. close holes in MeshLab) and export it again");
+}
+
+// Zero-area triangles of three distinct points in a line cannot be dropped.
+void checkNoNeedles(const TriSurface& scan, const fs::path& file)
+{
+    const std::vector<int> needles = needleTriangles(scan);
+    if (needles.empty()) return;
+    const auto& t = scan.triangles[needles[0]];
+    const Vec3 at = (scan.points[t[0]] + scan.points[t[1]] + scan.points[t[2]]) / 3.0;
+    char where[200];
+    std::snprintf(where, sizeof(where),
+                  "%zu triangles of zero area with three vertices on a line, e.g. %d near (%.6g %.6g %.6g)",
+                  needles.size(), needles[0], at.x, at.y, at.z);
+    throw UserError(file.string() + ": the scan has degenerate triangles (" + where +
+                    ", in the file's units): remove them (e.g. MeshLab's Remove Zero Area Faces, or "
+                    "Remove Duplicate Vertices and Faces) and export it again");
+}
+
 // A closed scan must be one shell...
 void checkOneShell(const TriSurface& scan, const fs::path& file)
 {
@@ -202,11 +238,10 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
     const std::string fileName = d.get<std::string>("file");
     const fs::path file = fs::path(fileName).is_absolute() ? fs::path(fileName) : caseDir / fileName;
     TriSurface scan = readStl(file);
-    const SurfaceCheck check = checkSurface(scan);
-    if (!check.watertight())
-        throw UserError(file.string() + ": the scan is not a closed surface (" + check.reason() +
-                        "); repair it (e.g. close holes in MeshLab) and export it again");
+    const int collapsed = dropCollapsedTriangles(scan);
+    checkClosed(scan, file);
     checkOneShell(scan, file);
+    checkNoNeedles(scan, file);
     const double scale = d.getScalarOrDefault("scale", 1.0, Bounds::positive());
     const Mat3 rotation = rotationFromDegrees(d.getOrDefault<Vec3>("rotate", Vec3{}));
     const Vec3 translation = d.getOrDefault<Vec3>("translate", Vec3{});
@@ -228,6 +263,7 @@ Specimen buildFromStl(const Dictionary& d, const fs::path& caseDir)
     if (d.getOrDefault<bool>("placeOnPlate", false)) placeOnPlate(s.surface, s.scan);
     finishHull(s);
     s.hullToScanVolume = s.properties.volume / scanVolume;
+    s.droppedTriangles = collapsed;
     return s;
 }
 

@@ -35,6 +35,7 @@ struct Specimen {
     // convexHull
     std::vector<HalfSpace> planes;
     double hullToScanVolume = 1.0;  // stl only
+    int droppedTriangles = 0;       // stl only: collapsed (zero-area) triangles removed
 
     double equivalentDiameter() const;  // (6V/π)^(1/3)
 };

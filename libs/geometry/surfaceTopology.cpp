@@ -93,4 +93,39 @@ std::vector<std::array<int, 2>> selfIntersections(const TriSurface& surface, std
     return out;
 }
 
+int dropCollapsedTriangles(TriSurface& surface)
+{
+    const std::size_t before = surface.triangles.size();
+    surface.triangles.erase(
+        std::remove_if(surface.triangles.begin(), surface.triangles.end(),
+                       [](const auto& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }),
+        surface.triangles.end());
+    return static_cast<int>(before - surface.triangles.size());
+}
+
+std::vector<int> needleTriangles(const TriSurface& surface)
+{
+    std::vector<int> needles;
+    for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
+        const auto& t = surface.triangles[i];
+        const Vec3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
+        const double longest = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
+        if (norm(cross(b - a, c - a)) <= 2e-12 * longest) needles.push_back(static_cast<int>(i));
+    }
+    return needles;
+}
+
+int nearDuplicateVertices(const TriSurface& surface, double distance)
+{
+    std::vector<int> order(surface.points.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto& p = surface.points;
+    std::sort(order.begin(), order.end(), [&p](int a, int b) { return p[a].x < p[b].x; });
+    std::vector<char> close(p.size(), 0);
+    for (std::size_t i = 0; i < order.size(); ++i)
+        for (std::size_t j = i + 1; j < order.size() && p[order[j]].x - p[order[i]].x <= distance; ++j)
+            if (norm(p[order[j]] - p[order[i]]) <= distance) close[order[i]] = close[order[j]] = 1;
+    return static_cast<int>(std::count(close.begin(), close.end(), 1));
+}
+
 }  // namespace rockfrac

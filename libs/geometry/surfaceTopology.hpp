@@ -18,4 +18,16 @@ std::vector<std::vector<int>> surfaceShells(const TriSurface& surface);
 // closed and manifold (checkSurface(...).watertight()).
 std::vector<std::array<int, 2>> selfIntersections(const TriSurface& surface, std::size_t limit = 10);
 
+// Removes the triangles that name one vertex twice (collapsed to an edge or a point by the
+// vertex welding: zero area, no edge of their own); returns how many.
+int dropCollapsedTriangles(TriSurface& surface);
+
+// Triangles of three distinct vertices on one line (area at most 1e-12 of their longest
+// edge squared): zero-area needles that cannot be dropped without opening the surface.
+std::vector<int> needleTriangles(const TriSurface& surface);
+
+// How many vertices lie within `distance` of another vertex (exported duplicates that the
+// exact welding of readStl did not merge).
+int nearDuplicateVertices(const TriSurface& surface, double distance);
+
 }  // namespace rockfrac

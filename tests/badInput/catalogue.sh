@@ -129,6 +129,24 @@ $facetFn
 $octahedronFn
 { echo "solid crossing"; octahedron 0 "20 0 -2"; echo "endsolid crossing"; } > constant/triSurface/rock.stl
 SETUP
+# A zero-area needle (three vertices on a line: (5 5 0) on the edge it closes) keeps the
+# surface closed but cannot be dropped; a vertex exported twice 1e-9 apart opens it.
+badCase stlZeroAreaNeedle disc "rock.stl" "degenerate triangles" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid needle"; facet "10 0 0" "5 5 0" "0 0 10"; facet "5 5 0" "0 10 0" "0 0 10"; facet "10 0 0" "0 10 0" "5 5 0"
+  facet "0 10 0" "-10 0 0" "0 0 10"; facet "-10 0 0" "0 -10 0" "0 0 10"; facet "0 -10 0" "10 0 0" "0 0 10"
+  facet "0 10 0" "10 0 0" "0 0 -10"; facet "-10 0 0" "0 10 0" "0 0 -10"; facet "0 -10 0" "-10 0 0" "0 0 -10"
+  facet "10 0 0" "0 -10 0" "0 0 -10"; echo "endsolid needle"; } > constant/triSurface/rock.stl
+SETUP
+badCase stlNearDuplicateVertices disc "rock.stl" "Merge Close Vertices" meshRock -case . <<SETUP
+$stlDict
+$facetFn
+{ echo "solid unwelded"; facet "10 0 0" "0 10 0" "0 0 10.000000001"; facet "0 10 0" "-10 0 0" "0 0 10"
+  facet "-10 0 0" "0 -10 0" "0 0 10"; facet "0 -10 0" "10 0 0" "0 0 10"; facet "0 10 0" "10 0 0" "0 0 -10"
+  facet "-10 0 0" "0 10 0" "0 0 -10"; facet "0 -10 0" "-10 0 0" "0 0 -10"; facet "10 0 0" "0 -10 0" "0 0 -10"
+  echo "endsolid unwelded"; } > constant/triSurface/rock.stl
+SETUP
 badCase stlFourVertices disc "rock.stl" "" meshRock -case . <<SETUP
 $stlDict
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid x\n' > constant/triSurface/rock.stl

@@ -51,6 +51,11 @@ void report(const Specimen& s)
         std::printf("  convex hull: %zu planes, %zu triangles%s\n", s.planes.size(),
                     s.surface.triangles.size(), s.scan ? "" : "");
     if (s.scan) std::printf("  hull/scan volume ratio %.4f\n", s.hullToScanVolume);
+    if (s.scan && s.droppedTriangles > 0)
+        std::printf(
+            "Warning: %d zero-area triangles of the scan (two of their corners the same point) were "
+            "dropped; the surface is closed without them\n",
+            s.droppedTriangles);
     // Both solvers fill the convex hull (the paper's way): a concave scan gains volume.
     if (s.scan && s.hullToScanVolume > 1.05)
         std::printf(
