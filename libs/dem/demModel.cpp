@@ -192,9 +192,12 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
         }
         const ErodedCore core = erodeConvexCell(vertices, planes, cell_edges, dilation);
         if (core.shrunk) ++counters_.shrunk_cores;
-        if (core.vertices.size() > 255)
-            throw std::runtime_error(
-                "a cell core with more than 255 vertices (the edge table holds 1-byte indices)");
+        if (core.vertices.size() > 255)  // the core's edge table holds 1-byte vertex indices
+            throw UserError("cell " + std::to_string(local) + " of the Voronoi mesh has a core of " +
+                            std::to_string(core.vertices.size()) +
+                            " vertices (at most 255): its faces follow too many facets of the rock's "
+                            "surface; decimate the scan (fewer triangles and hull facets) or mesh "
+                            "larger cells (nCells or mesoConstant in system/voronoiMeshDict)");
         double reach = 0.0;
         for (const Vec3& v : core.vertices) {
             c.core_vertices.push_back(transposeTimes(R, v));

@@ -7,6 +7,7 @@
 #     1e-7 s step): its sliver-rich mesh adds ~58 % mass and feFractureSolver warns with where
 #     the small elements are;
 #   - the tutorial's rock 7 at the same settings adds 1.3 %: no warning;
+#   - a denser scan (20 480 triangles) in the DEM: cores of more than 255 vertices refused, exit 1;
 #   - a scan with collapsed (zero-area) triangles: dropped with a warning, exit 0.
 # Elsewhere: dense (case.meshing.denseScan: a 5 120-facet hull meshed; a concave scan warned);
 # refused with exit 1 and one message (case.badInput.catalogue): open (stlHole), unwelded
@@ -34,6 +35,13 @@ grep -q "hull/scan volume ratio 1.00" log.meshRock || fail "hull/scan: $(grep 'r
 runLogged voronoiMesh
 runLogged bondedDemFoam -dry-run
 echo "DEM: $(grep -m1 '^voronoiMesh: ' log.voronoiMesh | cut -c1-100)"
+# A denser scan (20 480 triangles, a 6 188-facet hull) gives cells whose cores have more
+# than 255 vertices: bondedDemFoam refuses them with one message, exit 1.
+cd "$work/spb"
+icosphere noisy 5 scans/dense.stl && echo 'dense { stl "scans/dense.stl"; scale 1e-3; }' >> rocks
+makeRockCase dense > log.makeRockCase.dense 2>&1 || fail "makeRockCase dense: $(tail -3 log.makeRockCase.dense)"
+cd dense && runLogged meshRock && runLogged voronoiMesh
+expectUserError "decimate the scan" bondedDemFoam -dry-run
 
 # The FEM tutorial at its -coarse settings: the scan's mesh warns, the tutorial rock does not.
 coarse() { setEntry system/feMeshDict elementSize 4e-3 && setEntry system/controlDict massScalingTimeStep 1e-7; }
