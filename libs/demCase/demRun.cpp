@@ -349,8 +349,8 @@ void BondedDemRun::printSetup() const
                 mesh.nBonds(), 1e3 * mesh.dilationRadius, mass);
     if (model->counters().own_radius_cells > 0)
         std::printf(
-            "Dilation: %d cells thinner than 1.8 dilation radii have their own radius, half their "
-            "smallest centroid-face distance (their dilated cores stay inside them)\n",
+            "Dilation: %d cells too thin for the dilation radius (a centroid-face distance below 1.1 "
+            "radii) have their own, half that distance (their dilated cores stay inside them)\n",
             model->counters().own_radius_cells);
     std::printf("Bonds: %s, damping %s %.3g\n", parameters.bond_law->describe().c_str(),
                 dampingReadingName(parameters.damping_reading), parameters.bond_damping);
