@@ -16,6 +16,7 @@ ErodedCore shrinkTowardCentroid(const std::vector<Vec3>& cell_vertices, const st
     const double factor = std::max(1.0 - dilation_radius / smallest_offset, 0.1);
     ErodedCore core;
     core.shrunk = true;
+    core.radius = dilation_radius;
     for (const Vec3& v : cell_vertices) core.vertices.push_back(factor * v);
     core.edges = cell_edges;
     return core;
@@ -46,6 +47,7 @@ ErodedCore erodeConvexCell(const std::vector<Vec3>& cell_vertices, const std::ve
     std::vector<double> coordinates;
     cell.vertices(coordinates);
     ErodedCore core;
+    core.radius = dilation_radius;
     std::vector<int> kept(cell.p);  // Voro++ vertex -> core vertex
     for (int i = 0; i < cell.p; ++i) {
         const Vec3 v{coordinates[3 * i] * size, coordinates[3 * i + 1] * size, coordinates[3 * i + 2] * size};
@@ -67,6 +69,17 @@ ErodedCore erodeConvexCell(const std::vector<Vec3>& cell_vertices, const std::ve
                 core.edges.push_back(edge);
         }
     return core;
+}
+
+ErodedCore dilatedCellCore(const std::vector<Vec3>& cell_vertices, const std::vector<CellPlane>& faces,
+                           const std::vector<std::array<int, 2>>& cell_edges, double dilation_radius)
+{
+    ErodedCore core = erodeConvexCell(cell_vertices, faces, cell_edges, dilation_radius);
+    if (!core.shrunk) return core;
+    double smallest_offset = 1e300;
+    for (const CellPlane& face : faces) smallest_offset = std::min(smallest_offset, face.offset);
+    if (!(dilation_radius > 0.9 * smallest_offset) || !(smallest_offset > 0.0)) return core;
+    return erodeConvexCell(cell_vertices, faces, cell_edges, 0.5 * smallest_offset);
 }
 
 }  // namespace rockfrac

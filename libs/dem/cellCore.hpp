@@ -19,6 +19,7 @@ struct ErodedCore {
     std::vector<Vec3> vertices;             // same frame as the input
     std::vector<std::array<int, 2>> edges;  // vertex index pairs, each edge once (i < j)
     bool shrunk = false;                    // erosion emptied the cell: shrink fallback used
+    double radius = 0.0;                    // the dilation radius the core was made for [m]
 };
 
 // Every face plane moved inward by dilation_radius, cut exactly (Voro++ plane
@@ -28,6 +29,16 @@ struct ErodedCore {
 // and keeps the cell's edges (cell_edges). The edges serve the wall contact of a core
 // edge with a ridge of a triangulated surface (docs/theory-dem.md §7).
 ErodedCore erodeConvexCell(const std::vector<Vec3>& cell_vertices, const std::vector<CellPlane>& faces,
+                           const std::vector<std::array<int, 2>>& cell_edges, double dilation_radius);
+
+// The core for the model's dilation radius r_d: erodeConvexCell, unless erosion fails and its
+// shrink factor 1 - r_d / h_min falls below the 0.1 floor (r_d > 0.9 h_min): that clamped core
+// dilated by r_d would stick out of its cell by up to r_d - 0.9 h_min, into its neighbours and
+// through a plate set at the mesh, an overlap at rest that the first step turns into contact
+// energy with no input. Such a cell (a cell far finer than the mesh's mean, e.g. at the fine end
+// of a size field) gets its own radius 0.5 h_min instead, eroded or shrunk by 0.5, so its
+// dilated core stays inside the cell. core.radius is the radius used.
+ErodedCore dilatedCellCore(const std::vector<Vec3>& cell_vertices, const std::vector<CellPlane>& faces,
                            const std::vector<std::array<int, 2>>& cell_edges, double dilation_radius);
 
 }  // namespace rockfrac

@@ -142,7 +142,6 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
     resizeFields(c, first + n);  // at rest, no forces, no bonds yet
     for (int local = 0; local < n; ++local) {
         const int cell = first + local;
-        c.dilation_radius[cell] = dilation;
         const double density = parameters_.rock_density;
         c.mass[cell] = density * mesh.volumes[local];
         smallest_radius_ = std::min(smallest_radius_, std::cbrt(3.0 * mesh.volumes[local] / (4.0 * pi)));
@@ -190,8 +189,10 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
                     cell_edges.push_back(edge);
             }
         }
-        const ErodedCore core = erodeConvexCell(vertices, planes, cell_edges, dilation);
+        const ErodedCore core = dilatedCellCore(vertices, planes, cell_edges, dilation);
         if (core.shrunk) ++counters_.shrunk_cores;
+        if (core.radius != dilation) ++counters_.own_radius_cells;
+        c.dilation_radius[cell] = core.radius;
         if (core.vertices.size() > 255)  // the core's edge table holds 1-byte vertex indices
             throw UserError("cell " + std::to_string(local) + " of the Voronoi mesh has a core of " +
                             std::to_string(core.vertices.size()) +
@@ -234,7 +235,7 @@ std::vector<Quat> DemModel::appendCells(const VoronoiMesh& mesh, const WallMotio
             c.core_planes.push_back(stored);
         }
         c.core_plane_offset.push_back(static_cast<int>(c.core_planes.size()));
-        c.bounding_radius[cell] = reach + dilation;
+        c.bounding_radius[cell] = reach + core.radius;
     }
     const double G = parameters_.rock_youngs_modulus / (2.0 * (1.0 + parameters_.rock_poisson_ratio));
     rayleigh_time_step_ = pi * smallest_radius_ * std::sqrt(parameters_.rock_density / G) /

@@ -57,6 +57,7 @@ struct DemCounters {
     int core_intersections = 0;       // contacts this step whose cores are cut (pairs and walls)
     int pair_core_intersections = 0;  // of these, cell–cell pairs
     int shrunk_cores = 0;             // cells whose erosion failed (shrink fallback)
+    int own_radius_cells = 0;         // cells too thin for r_d: their own radius (dilatedCellCore)
     // The step check (DemModel::setStepLimit): steps of the caller split into substeps
     // because contacts had stiffened a cell beyond the step, and the substeps they took.
     long split_steps = 0;

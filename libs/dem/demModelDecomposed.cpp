@@ -95,7 +95,8 @@ int DemModel::reduceOverRanks(int non_finite_cell)
                              static_cast<double>(c.wall_contacts_active),
                              static_cast<double>(c.core_intersections),
                              static_cast<double>(c.pair_core_intersections),
-                             static_cast<double>(c.shrunk_cores)};
+                             static_cast<double>(c.shrunk_cores),
+                             static_cast<double>(c.own_radius_cells)};
     exchange_->sumOverRanks(v);
     DemEnergies& g = global_energies_;
     g.kinetic_translation = v[0];
@@ -120,8 +121,9 @@ int DemModel::reduceOverRanks(int non_finite_cell)
                            &global_counters_.wall_contacts_active,
                            &global_counters_.core_intersections,
                            &global_counters_.pair_core_intersections,
-                           &global_counters_.shrunk_cores};
-    for (int i = 0; i < 10; ++i) *summed[i] = static_cast<int>(v[11 + i]);
+                           &global_counters_.shrunk_cores,
+                           &global_counters_.own_radius_cells};
+    for (int i = 0; i < 11; ++i) *summed[i] = static_cast<int>(v[11 + i]);
     // The first non-finite cell by global id, or -1.
     const double mine =
         non_finite_cell >= 0 ? -static_cast<double>(exchange_->globalCell(non_finite_cell)) : -1e300;

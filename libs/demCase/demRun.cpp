@@ -347,6 +347,11 @@ void BondedDemRun::printSetup() const
     for (int c = 0; c < cells.size(); ++c) mass += cells.mass[c];
     std::printf("Mesh: %d cells, %d bonds, dilation radius %.4g mm, mass %.5g kg\n", mesh.nCells(),
                 mesh.nBonds(), 1e3 * mesh.dilationRadius, mass);
+    if (model->counters().own_radius_cells > 0)
+        std::printf(
+            "Dilation: %d cells too thin for the dilation radius (a centroid-face distance below 1.1 "
+            "radii) have their own, half that distance (their dilated cores stay inside them)\n",
+            model->counters().own_radius_cells);
     std::printf("Bonds: %s, damping %s %.3g\n", parameters.bond_law->describe().c_str(),
                 dampingReadingName(parameters.damping_reading), parameters.bond_damping);
     printBondSizeEffect(model->interfaces(), parameters);

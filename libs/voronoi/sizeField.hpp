@@ -45,11 +45,11 @@ struct SizeField {
 };
 
 // The smallest region size voronoiMesh allows, in dilation radii of the base cells
-// (dilationFraction x base size): finer cells are too small for the mesh's dilation radius (the
-// DEM's contact shell). Measured on the 300-cell granite disc graded to a quarter of the base
-// at the contacts (1.29 mm): with dilationFraction 0.1 (3.5 radii) the energy check stops the run
-// at its first step, whatever the step; with 0.05 (7 radii) it runs to failure. Half the base
-// (5 radii) runs at 0.1.
+// (dilationFraction x base size). Set when the 300-cell granite disc graded to a quarter of the
+// base at the contacts (1.29 mm, 3.5 radii) stopped on the DEM's energy check at its first step
+// with dilationFraction 0.1: cells too thin for the radius had a shrunk core sticking out of
+// them. The DEM now gives such cells their own radius (dilatedCellCore) and that disc runs; the
+// floor is kept until finer fields are validated.
 constexpr double smallestSizeInDilationRadii = 4.0;
 
 // The entries of voronoiMeshDict's sizeField and of one of its regions.

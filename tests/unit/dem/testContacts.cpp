@@ -115,15 +115,25 @@ TEST_CASE("the core of a box cell is the box eroded by r_d; face neighbours touc
           Approx(2.0 * contact_dilation).epsilon(1e-12));
 }
 
-TEST_CASE("a thin cell whose erosion vanishes falls back to a shrunk core and is counted", "[dem][core]")
+TEST_CASE("a cell too thin for r_d gets its own radius, its dilated core inside it, and is counted",
+          "[dem][core]")
 {
     DemParameters p = quietContactParameters();
     p.dilation_radius = 0.6 * contact_cell_size;  // larger than half the cell: erosion empties it
     DemModel model(test::boxBlockMesh(1, 1, 1, {contact_cell_size, contact_cell_size, contact_cell_size},
                                       contact_dilation, false),
                    p);
-    CHECK(model.counters().shrunk_cores == 1);
-    CHECK(model.cells().core_vertex_offset[1] == 8);
+    // The shrink factor 1 - r_d / h_min would be clamped (r_d > 0.9 h_min): the cell's own
+    // radius is half its smallest centroid-face distance, and erosion by it succeeds.
+    CHECK(model.counters().own_radius_cells == 1);
+    CHECK(model.counters().shrunk_cores == 0);
+    const CellArrays& cells = model.cells();
+    CHECK(cells.dilation_radius[0] == Approx(0.25 * contact_cell_size).epsilon(1e-12));
+    REQUIRE(cells.core_vertex_offset[1] == 8);
+    for (int v = 0; v < 8; ++v)
+        for (int d = 0; d < 3; ++d)
+            CHECK(std::fabs(cells.core_vertices[v][d]) + cells.dilation_radius[0] <=
+                  0.5 * contact_cell_size * (1 + 1e-12));
 }
 
 TEST_CASE("a dilated cell pressed on a plate follows Hertz with R = r_d", "[dem][contact][wall]")
