@@ -153,6 +153,61 @@ const std::vector<std::string>& explainGapDictEntries()
     return entries;
 }
 
+namespace {
+
+// The `pairs` entry: a count 0 to maximumPairs, or the word off; absent: `current`.
+int readPairs(const Dictionary& dict, int current)
+{
+    const Entry* pairs = dict.findEntry("pairs");
+    if (!pairs) return current;
+    const std::string what =
+        "give the most pairs of effects to refit when no single effect passes the "
+        "absolute test, 0 to " +
+        std::to_string(maximumPairs) + " (each up to 9 evaluations of every seed), or off";
+    if (pairs->values.size() == 1 && pairs->values[0].isNumber()) {
+        const double n = dict.getScalarOrDefault("pairs", 3, Bounds::closed(0, maximumPairs));
+        if (n != std::floor(n))
+            throw UserError(dict.location("pairs").str() + ": pairs " + std::to_string(n) + " is no count; " +
+                            what);
+        return static_cast<int>(n);
+    }
+    if (pairs->values.size() == 1 && dict.get<std::string>("pairs") == "off") return 0;
+    throw UserError(dict.location("pairs").str() + ": pairs is not a count nor off; " + what);
+}
+
+// The `tied` entries: each an entry set to a factor times a baseline parameter.
+std::vector<calibration::TiedEntry> readTied(const Dictionary& dict,
+                                             const std::vector<BaselineParameter>& baseline)
+{
+    std::vector<calibration::TiedEntry> tied;
+    if (dict.isDict("tied"))
+        for (const Entry& e : dict.subDict("tied").entries()) {
+            if (!e.dict)
+                throw UserError(
+                    dict.subDict("tied").location(e.keyword).str() + ": tied entry '" + e.keyword +
+                    "' must be a sub-dictionary { entry <file/entry>; factor <f>; of <baseline>; }");
+            const Dictionary& d = *e.dict;
+            checkKnownEntries(d, {"entry", "factor", "of"});
+            calibration::TiedEntry t;
+            t.name = e.keyword;
+            t.entry = d.get<std::string>("entry");
+            t.factor = d.getScalar("factor", Bounds::positive());
+            const std::string of = d.get<std::string>("of");
+            std::size_t i = 0;
+            while (i < baseline.size() && baseline[i].where.name != of) ++i;
+            if (i == baseline.size())
+                throw UserError(d.location("of").str() + ": tied entry '" + e.keyword + "': '" + of +
+                                "' is not a baseline parameter");
+            t.parameter = i;
+            t.file = baseline[i].where.file;
+            tied.push_back(t);
+        }
+
+    return tied;
+}
+
+}  // namespace
+
 ExplainStudy readExplainStudy(const fs::path& studyDirectory)
 {
     ExplainStudy s;
@@ -234,28 +289,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
         requireCaseEntry(d.location("entry").str(), cases, b.where.file, b.where.entry);
         s.baseline.push_back(b);
     }
-    if (dict.isDict("tied"))
-        for (const Entry& e : dict.subDict("tied").entries()) {
-            if (!e.dict)
-                throw UserError(
-                    dict.subDict("tied").location(e.keyword).str() + ": tied entry '" + e.keyword +
-                    "' must be a sub-dictionary { entry <file/entry>; factor <f>; of <baseline>; }");
-            const Dictionary& d = *e.dict;
-            checkKnownEntries(d, {"entry", "factor", "of"});
-            calibration::TiedEntry t;
-            t.name = e.keyword;
-            t.entry = d.get<std::string>("entry");
-            t.factor = d.getScalar("factor", Bounds::positive());
-            const std::string of = d.get<std::string>("of");
-            std::size_t i = 0;
-            while (i < s.baseline.size() && s.baseline[i].where.name != of) ++i;
-            if (i == s.baseline.size())
-                throw UserError(d.location("of").str() + ": tied entry '" + e.keyword + "': '" + of +
-                                "' is not a baseline parameter");
-            t.parameter = i;
-            t.file = s.baseline[i].where.file;
-            s.tied.push_back(t);
-        }
+    s.tied = readTied(dict, s.baseline);
 
     s.effects = dict.get<std::vector<std::string>>("effects");
     if (s.effects.empty())
@@ -300,24 +334,7 @@ ExplainStudy readExplainStudy(const fs::path& studyDirectory)
     s.heldOutFraction = dict.getScalarOrDefault("heldOut", 0.5, Bounds::open(0, 1));
     s.minimumGapReduction = dict.getScalarOrDefault("minimumGapReduction", 0.3, Bounds::open(0, 1));
     s.significance = dict.getScalarOrDefault("significance", 0.01, Bounds::open(0, 0.5));
-    if (const Entry* pairs = dict.findEntry("pairs")) {
-        // A count 0 to maximumPairs, or the word off.
-        const std::string what =
-            "give the most pairs of effects to refit when no single effect passes the "
-            "absolute test, 0 to " +
-            std::to_string(maximumPairs) + " (each up to 9 evaluations of every seed), or off";
-        if (pairs->values.size() == 1 && pairs->values[0].isNumber()) {
-            const double n = dict.getScalarOrDefault("pairs", 3, Bounds::closed(0, maximumPairs));
-            if (n != std::floor(n))
-                throw UserError(dict.location("pairs").str() + ": pairs " + std::to_string(n) +
-                                " is no count; " + what);
-            s.maxPairs = static_cast<int>(n);
-        } else if (pairs->values.size() == 1 && dict.get<std::string>("pairs") == "off") {
-            s.maxPairs = 0;
-        } else {
-            throw UserError(dict.location("pairs").str() + ": pairs is not a count nor off; " + what);
-        }
-    }
+    s.maxPairs = readPairs(dict, s.maxPairs);
     return s;
 }
 
