@@ -38,6 +38,10 @@ namespace {
 
 constexpr int kLanes = 4;
 
+// What a lane without an interface or a live bond reads: finite, and summed as zero.
+const Mat3 no_rotation{};
+const Vec3 no_vector{};
+
 // Four doubles and a four-lane mask (all bits set = true). Only AVX2, never FMA: every
 // product and sum is rounded as the scalar kernel rounds it.
 typedef double V4 __attribute__((vector_size(32), aligned(32)));
@@ -111,8 +115,6 @@ inline __attribute__((always_inline)) V4 gatherInterfaces(const double* p, __m12
 void setUpBatch(const BondKernelArgs& a, const VoronoiQnscLaw::Coefficients& m, const int* ks, int n,
                 LaneBatch& batch)
 {
-    static const Mat3 no_rotation{};
-    static const Vec3 no_vector{};
     const void* rotation_i[kLanes];
     const void* rotation_j[kLanes];
     const void* state_i[3][kLanes];
@@ -199,12 +201,13 @@ struct LaneSums {
 // bond hands its lane to the scalar kernel; a broken one is skipped (mask 0).
 bool gatherNodes(const BondKernelArgs& a, LaneBatch& batch, int t, V3& node_i, V3& node_j, M4& live)
 {
-    static const Vec3 none{};
-    alignas(32) long long address_i[kLanes], address_j[kLanes], lanes[kLanes];
+    const void* at_i[kLanes];
+    const void* at_j[kLanes];
+    alignas(32) long long lanes[kLanes];
     bool any = false;
     for (int l = 0; l < kLanes; ++l) {
-        const Vec3* p = &none;
-        const Vec3* q = &none;
+        const Vec3* p = &no_vector;
+        const Vec3* q = &no_vector;
         lanes[l] = 0;
         if (t < batch.count[l] && !batch.fallback[l]) {
             const int b = batch.first[l] + t;
@@ -218,17 +221,12 @@ bool gatherNodes(const BondKernelArgs& a, LaneBatch& batch, int t, V3& node_i, V
                 batch.fallback[l] = true;
             }
         }
-        address_i[l] = reinterpret_cast<long long>(p);
-        address_j[l] = reinterpret_cast<long long>(q);
+        at_i[l] = p;
+        at_j[l] = q;
     }
     if (!any) return false;
-    const __m256i at_i = _mm256_load_si256(reinterpret_cast<const __m256i*>(address_i));
-    const __m256i at_j = _mm256_load_si256(reinterpret_cast<const __m256i*>(address_j));
-    const double* origin = nullptr;
-    node_i = {_mm256_i64gather_pd(origin, at_i, 1), _mm256_i64gather_pd(origin + 1, at_i, 1),
-              _mm256_i64gather_pd(origin + 2, at_i, 1)};
-    node_j = {_mm256_i64gather_pd(origin, at_j, 1), _mm256_i64gather_pd(origin + 1, at_j, 1),
-              _mm256_i64gather_pd(origin + 2, at_j, 1)};
+    node_i = gather3(addresses(at_i));
+    node_j = gather3(addresses(at_j));
     std::memcpy(&live, lanes, sizeof live);
     return true;
 }
@@ -313,9 +311,9 @@ struct InterfaceSums {
 };
 
 // Interfaces ks[0 .. n-1] (n <= 4): the outputs of those that stay in the lanes, and what
-// the block's sums need of each.
+// the block's sums need of each (results[k - begin], begin the block's first interface).
 void runBatch(const BondKernelArgs& a, const VoronoiQnscLaw::Coefficients& m, const int* ks, int n,
-              InterfaceSums* results)
+              InterfaceSums* results, int begin)
 {
     LaneBatch batch;
     setUpBatch(a, m, ks, n, batch);
@@ -325,7 +323,7 @@ void runBatch(const BondKernelArgs& a, const VoronoiQnscLaw::Coefficients& m, co
     for (int t = 0; t < steps; ++t) bondStep(a, m, batch, t, sums);
     for (int l = 0; l < n; ++l) {
         const int k = ks[l];
-        InterfaceSums& r = results[l];
+        InterfaceSums& r = results[k - begin];
         r.fallback = batch.fallback[l];
         if (r.fallback) continue;
         r.strain_energy = sums.strain_energy[l];
@@ -364,28 +362,25 @@ void runBlock(const BondKernelArgs& a, const VoronoiQnscLaw::Coefficients& m, in
     const int end = a.n_interfaces < begin + a.block_size ? a.n_interfaces : begin + a.block_size;
     orderByBondCount(a, begin, end, order);
     const int n = static_cast<int>(order.size());
-    results.resize(n);
+    results.resize(end - begin);
     for (int p = 0; p < n; p += kLanes) {
         // The next batch's second cells, as the scalar loop does two interfaces ahead.
         for (int ahead = p + kLanes; ahead < p + 2 * kLanes && ahead < n; ++ahead)
             prefetchInterface(a, order[ahead]);
-        runBatch(a, m, order.data() + p, n - p < kLanes ? n - p : kLanes, results.data() + p);
+        runBatch(a, m, order.data() + p, n - p < kLanes ? n - p : kLanes, results.data(), begin);
     }
     // The block's sums in interface order, the scalar kernel taking the lanes' fallbacks.
-    thread_local std::vector<int> position;
-    position.assign(end - begin, -1);
-    for (int p = 0; p < n; ++p) position[order[p] - begin] = p;
     BondBlockSums sums;
     for (int k = begin; k < end; ++k) {
-        const int p = position[k - begin];
-        if (p < 0) continue;  // another rank's
-        if (results[p].fallback) {
+        if (a.counted && !a.counted[k]) continue;  // another rank's
+        const InterfaceSums& r = results[k - begin];
+        if (r.fallback) {
             voronoiQnscInterfaceScalar(a, m, k, sums);
             continue;
         }
         BondBlockSums interface;
-        interface.strain_energy = results[p].strain_energy;
-        interface.damping_power = results[p].damping_power;
+        interface.strain_energy = r.strain_energy;
+        interface.damping_power = r.damping_power;
         sums.add(interface);
     }
     a.block_sums[block] = sums;
