@@ -54,7 +54,7 @@ echo "ok: in the bands (mantle work $mantle_work J, discharged $discharged kg)"
 summary=postProcessing/crusherPost/summary.dat
 key() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' "$summary"; }
 keys=$(awk -F'\t' '!/^#/ { printf "%s ", $1 }' "$summary")
-[ "$keys" = "powerMean_W powerSpread_W pressureMean_Pa pressureSpread_Pa throughputMean_kg_s throughputSpread_kg_s throughputMean_t_h massFed_kg massInside_kg massDischarged_kg massImbalance_kg fragmentsDischarged P50_m P80_m CSS_m specificEnergy_kWh_t specificEnergySpread_kWh_t P80_CSS F80_m reductionRatio_F80_P80 " ] ||
+[ "$keys" = "powerMean_W powerSpread_W pressureMean_Pa pressureSpread_Pa throughputMean_kg_s throughputSpread_kg_s throughputMean_t_h massFed_kg massInside_kg massDischarged_kg massImbalance_kg fragmentsDischarged P50_m P80_m CSS_m specificEnergy_kWh_t specificEnergySpread_kWh_t P80_CSS F80_m reductionRatio_F80_P80 cellsFed cellsMass_kg cellsP50_m cellsP80_m " ] ||
     fail "summary.dat keys: $keys"
 ! grep -qiE '(^|[^a-z])(nan|inf)([^a-z]|$)' "$summary" || fail "summary.dat holds inf or nan: $(cat "$summary")"
 # F80 of the feed's sizeRange (sizes uniform in number, mass ~ size^3), read here from constant/loading.
@@ -89,6 +89,20 @@ else
         key "$k" | grep -q "^not available: ." || fail "$k without a discharge: '$(key "$k")'"
     done
 fi
+# The cells' PSD (libs/crusher/feedCells.hpp): every cell of every rock fed, so the rocks fed
+# times the template's cells, holding the mass fed (summed from the scaled template cells, not
+# the model's: equal to round-off); its P50 <= P80, both positive; psd.dat's cells column a
+# mass-passing curve ending at 1.
+cells_per_rock=$(sed -n 's/^Feed class rock: .*: \([0-9]*\) cells, .*/\1/p' log.bondedDemFoam)
+rocks=$(sed -n 's/.*; \([0-9]*\) rocks fed, .*/\1/p' log.bondedDemFoam | tail -1)
+[ -n "$cells_per_rock" ] && [ -n "$rocks" ] && [ "$(key cellsFed)" = "$((rocks * cells_per_rock))" ] ||
+    fail "cellsFed $(key cellsFed) is not $rocks rocks x $cells_per_rock cells"
+awk -v m="$(key cellsMass_kg)" -v f="$(key massFed_kg)" -v p50="$(key cellsP50_m)" -v p80="$(key cellsP80_m)" \
+    'BEGIN { d = (m - f) / f; if (d < 0) d = -d; exit !(f > 0 && d < 1e-8 && p50 > 0 && p50 <= p80) }' ||
+    fail "cells' PSD: mass $(key cellsMass_kg) kg against massFed $(key massFed_kg) kg, P50 $(key cellsP50_m), P80 $(key cellsP80_m)"
+awk -F'\t' '!/^#/ { if ($3 < last || $3 > 1) bad = 1; last = $3; n++ } END { exit !(n > 0 && !bad && last == 1) }' \
+    postProcessing/crusherPost/psd.dat || fail "psd.dat's passingCells is not a passing curve ending at 1"
+echo "ok: cells' PSD: $(key cellsFed) cells, $(key cellsMass_kg) kg (fed $(key massFed_kg) kg), P80 $(key cellsP80_m) m"
 crusherPost -dry-run | grep -q "^Specific energy  " || fail "crusherPost's screen summary has no specific energy line"
 echo "ok: per tonne: specificEnergy_kWh_t $(key specificEnergy_kWh_t); P80_CSS $(key P80_CSS); F80_m $(key F80_m); reductionRatio_F80_P80 $(key reductionRatio_F80_P80)"
 

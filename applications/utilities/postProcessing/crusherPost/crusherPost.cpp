@@ -3,26 +3,36 @@
 // Reads  postProcessing/machine/0/machine.dat, postProcessing/discharge/0/discharge.dat,
 //        system/crusherPostDict (steadyStart [s], pistonArea [m^2]),
 //        constant/crusherKinematics (closedSideSetting, for P80 vs CSS),
-//        constant/loading (feed/sizeRange, for the feed's F80)
-// Writes postProcessing/crusherPost/summary.dat, power.png, pressure.png, throughput.png, psd.png
+//        constant/loading (feed/sizeRange, for the feed's F80; feed/rock or feed/classes and
+//        the latest <time>/crusherState, for the cells' PSD), the feed rocks' meshes,
+//        constant/rockProperties (rock/density)
+// Writes postProcessing/crusherPost/summary.dat, psd.dat (discharge and cells' PSD), power.png,
+//        pressure.png, throughput.png, psd.png
 //
 // Definitions (docs/theory-crusher.md): power draw = sum of contact force . mantle
 // surface velocity; hydraulic pressure = vertical force on the mantle / piston area;
 // throughput = discharged mass per second; means and spreads over t >= steadyStart.
 // Per tonne (libs/crusher/crusherFigures.hpp): specific energy = mean power / mean
-// throughput [kWh/t], P80/CSS, the feed's F80 and the reduction ratio F80/P80.
+// throughput [kWh/t], P80/CSS, the feed's F80 and the reduction ratio F80/P80. The cells'
+// PSD (libs/crusher/feedCells.hpp): every Voronoi cell of every rock fed as a particle, the
+// finest product the feed's meshes can make.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "core/application.hpp"
 #include "core/atomicFile.hpp"
 #include "core/dictionary.hpp"
 #include "core/knownEntries.hpp"
 #include "crusher/crusherFigures.hpp"
+#include "crusher/feedCells.hpp"
 #include "crusher/machineLoading.hpp"
+#include "fragments/fragmentCase.hpp"
 #include "fragments/psd.hpp"
 #include "io/timeSeries.hpp"
 #include "plot/gnuplot.hpp"
+#include "voronoi/voronoiMeshIO.hpp"
 
 using namespace rockfrac;
 namespace fs = std::filesystem;
@@ -33,7 +43,8 @@ const AppInfo info{
     "crusherPost",
     "Power draw, hydraulic pressure, throughput (steady-state means and spreads after the start-up),\n"
     "the discharge PSD (P50, P80 against the CSS), the specific energy (kWh/t), the feed's F80 and\n"
-    "the reduction ratio of a bondedDemFoam crusher run, with PNG plots and a one-screen summary.",
+    "the reduction ratio of a bondedDemFoam crusher run, and the PSD of the Voronoi cells of every\n"
+    "rock fed (the finest product its meshes can make), with PNG plots and a one-screen summary.",
     "[options]",
     {"crusherPost -case tutorials/CH660/tiny"},
     {},
@@ -139,6 +150,114 @@ void printPerTonne(const PerTonne& r)
                 r.reduction.available ? " (F80 / P80)" : "");
 }
 
+// The discharge PSD from the destructor's record (sieve size, mass per fragment); empty before
+// the first discharge.
+PsdCurve dischargePsd(const fs::path& dischargeFile, int& nFragments)
+{
+    nFragments = 0;
+    if (!fs::exists(dischargeFile)) return {};
+    const TimeSeries d = readTimeSeries(dischargeFile);
+    const std::vector<double> sizes = d.values("sieveSize"), masses = d.values("mass");
+    nFragments = static_cast<int>(sizes.size());
+    return sizes.empty() ? PsdCurve{} : cumulativePassing(sizes, masses);
+}
+
+// The cells' PSD: every cell of every rock fed by the latest time directory (its crusherState),
+// its class's template cell scaled to the rock's size. Empty, with `why`, before the run has
+// written a state.
+struct CellsPsd {
+    PsdCurve curve;
+    PsdSummary summary;
+    int cells = 0, rocks = 0;
+    double mass = 0.0;
+    std::string time, why;
+};
+
+CellsPsd cellsPsd(const Application& app, double css)
+{
+    CellsPsd r;
+    const std::vector<TimeDirectory> times = demStateTimes(app.casePath());
+    if (times.empty() || !fs::exists(app.path(times.back().name) / "crusherState")) {
+        r.why = "no time directory with a crusherState yet";
+        return r;
+    }
+    r.time = times.back().name;
+    const fs::path loadingFile = app.path("constant/loading");
+    const FeedSpec feed = readFeedSpec(Dictionary::readFile(loadingFile).subDict("feed"), app.casePath());
+    const double density = readRockDensity(app.casePath());
+    std::vector<FeedRockTemplate> templates;
+    std::vector<CellSizes> perClass;
+    for (const FeedClass& c : feed.classes) {
+        templates.push_back(makeFeedRockTemplate(readVoronoiMesh(c.rock_case), density));
+        perClass.push_back(templateCellSizes(templates.back(), density));
+    }
+    const fs::path stateFile = app.path(r.time) / "crusherState";
+    const CrusherState state = readCrusherState(stateFile);
+    CellSizes cells;
+    try {
+        cells = fedCellSizes(state.fed.rocks, templates, perClass);
+    } catch (const std::invalid_argument& e) {
+        throw UserError(stateFile.string() + ": its rocks do not fit " + loadingFile.string() + "'s feed (" +
+                        e.what() + "); run crusherPost on the case that wrote it");
+    }
+    r.rocks = static_cast<int>(state.fed.rocks.size());
+    r.cells = static_cast<int>(cells.mass.size());
+    for (double m : cells.mass) r.mass += m;
+    if (r.cells == 0) {
+        r.why = "no rock fed by t = " + r.time + " s";
+        return r;
+    }
+    r.curve = cumulativePassing(cells.sieve_size, cells.mass);
+    r.summary = summarisePsd(r.curve, css);
+    return r;
+}
+
+// psd.dat: the discharge's and the cells' mass passing at the sizes of either.
+void writePsdTable(const fs::path& file, const PsdCurve& discharge, const PsdCurve& cells)
+{
+    std::vector<double> sizes = discharge.size;
+    sizes.insert(sizes.end(), cells.size.begin(), cells.size.end());
+    std::sort(sizes.begin(), sizes.end());
+    sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+    writeFileAtomically(file, [&](std::ostream& o) {
+        o << "# size [m]\tpassingDischarge [-]\tpassingCells [-]\n";
+        char b[96];
+        for (double x : sizes) {
+            std::snprintf(b, sizeof(b), "%.10g\t%.10g\t%.10g\n", x,
+                          discharge.empty() ? 0.0 : passingAt(discharge, x),
+                          cells.empty() ? 0.0 : passingAt(cells, x));
+            o << b;
+        }
+    });
+}
+
+// psd.png: the discharge PSD and the cells' PSD, the CSS marked.
+void plotPsd(const fs::path& png, const PsdCurve& discharge, const PsdCurve& cells, double css)
+{
+    std::string g;
+    std::string plots;
+    const PsdCurve* curves[2] = {&discharge, &cells};
+    const char* names[2] = {"discharge", "cells"};
+    const char* titles[2] = {"discharge", "Voronoi cells of the rocks fed"};
+    const char* styles[2] = {" with linespoints ", " with lines "};
+    for (int k = 0; k < 2; ++k) {
+        if (curves[k]->empty()) continue;
+        std::vector<std::vector<double>> rows;
+        for (std::size_t i = 0; i < curves[k]->size.size(); ++i)
+            rows.push_back({1e3 * curves[k]->size[i], 100 * curves[k]->passing[i]});
+        g += plot::gnuplotDataBlock(names[k], rows);
+        plots += std::string(plots.empty() ? "plot " : ", ") + "$" + names[k] + " using 1:2" + styles[k] +
+                 plot::seriesColour(k) + " title " + plot::gnuplotString(titles[k]);
+    }
+    if (plots.empty()) return;
+    g += "set title 'Discharge PSD and the PSD of the cells fed'\nset xlabel 'sieve size [mm]'\nset ylabel "
+         "'passing [%]'\n"
+         "set logscale x\nset grid\nset key top left\nset arrow from " +
+         std::to_string(1e3 * css) + ", graph 0 to " + std::to_string(1e3 * css) + ", graph 1 nohead dt 2\n" +
+         plots + "\n";
+    plot::renderPng(g, png);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -173,26 +292,10 @@ int main(int argc, char** argv)
         const Stat P = statistics(steadyP), p = statistics(steadyPressure), Q = statistics(steadyQ);
         const double imbalance = fed.back() - inside.back() - out.back();
 
-        // Discharge PSD from the destructor's record (sieve size, mass per fragment).
-        PsdSummary psd;
-        PsdCurve curve;
         int nFragments = 0;
-        const fs::path dischargeFile = app.path("postProcessing/discharge/0/discharge.dat");
-        if (fs::exists(dischargeFile)) {
-            const TimeSeries d = readTimeSeries(dischargeFile);
-            std::vector<double> sizes, masses;
-            const auto dt = d.values("Time"), ds = d.values("sieveSize"), dm = d.values("mass");
-            for (std::size_t i = 0; i < dt.size();
-                 ++i) {  // every fragment of the run (the record starts with the first discharge)
-                sizes.push_back(ds[i]);
-                masses.push_back(dm[i]);
-            }
-            nFragments = static_cast<int>(sizes.size());
-            if (!sizes.empty()) {
-                curve = cumulativePassing(sizes, masses);
-                psd = summarisePsd(curve, css);
-            }
-        }
+        const PsdCurve curve = dischargePsd(app.path("postProcessing/discharge/0/discharge.dat"), nFragments);
+        const PsdSummary psd = curve.empty() ? PsdSummary{} : summarisePsd(curve, css);
+        const CellsPsd cells = cellsPsd(app, css);
         const fs::path dir = app.path("postProcessing/crusherPost");
         const PerTonne figures = perTonne(P, Q, nFragments, psd.p80, css, app.path("constant/loading"));
         char text[2000];
@@ -206,10 +309,15 @@ int main(int argc, char** argv)
             "fragmentsDischarged\t%d\nP50_m\t%.6g\nP80_m\t%.6g\nCSS_m\t%.6g\n",
             steadyStart, P.n, P.mean, P.spread, p.mean, p.spread, Q.mean, Q.spread, 3.6 * Q.mean, fed.back(),
             inside.back(), out.back(), imbalance, nFragments, psd.p50, psd.p80, css);
+        char cellKeys[200];
+        std::snprintf(cellKeys, sizeof(cellKeys),
+                      "cellsFed\t%d\ncellsMass_kg\t%.9g\ncellsP50_m\t%.6g\ncellsP80_m\t%.6g\n", cells.cells,
+                      cells.mass, cells.summary.p50, cells.summary.p80);
         if (!app.dryRun()) {  // a dry run writes nothing
             fs::create_directories(dir);
             writeFileAtomically(dir / "summary.dat",
-                                [&](std::ostream& o) { o << text << perTonneKeys(figures); });
+                                [&](std::ostream& o) { o << text << perTonneKeys(figures) << cellKeys; });
+            writePsdTable(dir / "psd.dat", curve, cells.curve);
         }
         std::printf("Steady window t >= %g s (%d rows of %zu)\n", steadyStart, P.n, t.size());
         std::printf("Power draw        %10.4g kW   (spread %.3g kW)\n", 1e-3 * P.mean, 1e-3 * P.spread);
@@ -224,6 +332,14 @@ int main(int argc, char** argv)
                 nFragments, 1e3 * psd.p50, 1e3 * psd.p80, 1e3 * css, 1e3 * (psd.p80 - css));
         else
             std::printf("Discharge PSD: nothing discharged yet\n");
+        if (cells.cells > 0)
+            std::printf(
+                "Cells' PSD: %d Voronoi cells of %d rocks fed by t = %s s, %.9g kg, P50 %.4g mm, P80 %.4g mm "
+                "(the finest product these feed meshes can make)\n",
+                cells.cells, cells.rocks, cells.time.c_str(), cells.mass, 1e3 * cells.summary.p50,
+                1e3 * cells.summary.p80);
+        else
+            std::printf("Cells' PSD: %s\n", cells.why.c_str());
         printPerTonne(figures);
         if (!app.dryRun()) {
             try {
@@ -232,18 +348,7 @@ int main(int argc, char** argv)
                            steadyStart);
                 plotSeries(dir / "throughput.png", "Throughput", "throughput [t/h]", t, throughput, 3.6,
                            steadyStart);
-                if (!curve.empty()) {
-                    std::vector<std::vector<double>> rows;
-                    for (std::size_t i = 0; i < curve.size.size(); ++i)
-                        rows.push_back({1e3 * curve.size[i], 100 * curve.passing[i]});
-                    std::string g = plot::gnuplotDataBlock("psd", rows);
-                    g += "set title 'Discharge PSD'\nset xlabel 'sieve size [mm]'\nset ylabel 'passing [%]'\n"
-                         "set logscale x\nset grid\nset arrow from " +
-                         std::to_string(1e3 * css) + ", graph 0 to " + std::to_string(1e3 * css) +
-                         ", graph 1 nohead dt 2\nplot $psd using 1:2 with linespoints " +
-                         plot::seriesColour(0) + " title ''\n";
-                    plot::renderPng(g, dir / "psd.png");
-                }
+                plotPsd(dir / "psd.png", curve, cells.curve, css);
             } catch (const UserError& e) {
                 std::printf("Plots skipped: %s\n", e.what());
             }
