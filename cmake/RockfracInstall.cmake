@@ -31,7 +31,7 @@ set(rockfrac_run_outputs
   "/tutorials/BDT/loadingRate/speed[^/]*$" "/tutorials/explainGap/twoRates/(slow|fast)$"
   # the crusher: liners, kinematics and the feed rock's meshes (meshCrusher, meshRock)
   "/tutorials/CH660/[^/]+/constant/(triSurface|crusherKinematics)$"
-  "/tutorials/CH660/[^/]+/feedRock/constant$" "/tutorials/CH660/geometry/constant$"
+  "/tutorials/CH660/[^/]+/feedRock[A-Za-z]*/constant$" "/tutorials/CH660/geometry/constant$"
   # explainGap, makeTwinData, calibrateModel, runCases: runs, twin data, tables, plots, reports
   "/(runs|simulations|augmentedCase|measured|results)$" "/hiddenLabel$"
   "/tutorials/explainGap/.*/(explainGap\\.[^/]*|[^/]*\\.dat|[^/]*\\.png[^/]*)$"

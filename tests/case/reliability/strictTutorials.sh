@@ -76,6 +76,11 @@ strict meshCrusher -case "$work/crusher"
 demCase "$work/crusher/feedRock"
 strict bondedDemFoam -case "$work/crusher" -dry-run
 for t in full reduced; do strict meshCrusher -case "$src/tutorials/CH660/$t" -dry-run; done
+# The size-resolved feed: its three templates and its feed classes.
+copyTutorial tutorials/CH660/sizeResolved "$work/classes"
+strict meshCrusher -case "$work/classes"
+for rock in feedRock feedRockMedium feedRockFine; do demCase "$work/classes/$rock"; done
+strict bondedDemFoam -case "$work/classes" -dry-run
 # The studies: calibrateModel reads all its inputs; explainGap and makeTwinData stop at the
 # measurements or cases their tutorials make first, after the dictionary is checked.
 for c in granite graniteFEM limestone limestoneFEM; do strict calibrateModel -case "$src/cases/calibration/$c" -dry-run; done
