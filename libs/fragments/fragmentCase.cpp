@@ -138,15 +138,26 @@ void writeFragmentTable(const fs::path& file, const FragmentAnalysis& analysis)
 
 void writePsdTable(const fs::path& file, const FragmentSizeReport& report)
 {
-    std::vector<double> sizes = report.by_equivalent_diameter.size;
-    sizes.insert(sizes.end(), report.by_sieve_size.size.begin(), report.by_sieve_size.size.end());
+    writePassingTable(file, {"passingEquivalentDiameter", "passingSieveSize"},
+                      {&report.by_equivalent_diameter, &report.by_sieve_size});
+}
+
+void writePassingTable(const fs::path& file, const std::vector<std::string>& names,
+                       const std::vector<const PsdCurve*>& curves)
+{
+    std::vector<double> sizes;
+    for (const PsdCurve* c : curves) sizes.insert(sizes.end(), c->size.begin(), c->size.end());
     std::sort(sizes.begin(), sizes.end());
     sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
     writeFileAtomically(file, [&](std::ostream& out) {
-        out << "# size [m]\tpassingEquivalentDiameter [-]\tpassingSieveSize [-]\n" << std::setprecision(10);
-        for (double x : sizes)
-            out << x << '\t' << passingAt(report.by_equivalent_diameter, x) << '\t'
-                << passingAt(report.by_sieve_size, x) << '\n';
+        out << "# size [m]";
+        for (const std::string& name : names) out << '\t' << name << " [-]";
+        out << '\n' << std::setprecision(10);
+        for (double x : sizes) {
+            out << x;
+            for (const PsdCurve* c : curves) out << '\t' << passingAt(*c, x);
+            out << '\n';
+        }
     });
 }
 

@@ -52,6 +52,11 @@ FragmentSizeReport reportSizes(const FragmentAnalysis& analysis);
 // Text outputs (tab separated, '#' header with units), written atomically.
 void writeFragmentTable(const std::filesystem::path& file, const FragmentAnalysis& analysis);
 void writePsdTable(const std::filesystem::path& file, const FragmentSizeReport& report);
+// Mass passing of several curves side by side: one row per size of any of them (ascending, each
+// once), each curve's passingAt there (0 for an empty curve); columns "# size [m]" then
+// "<name> [-]" per curve.
+void writePassingTable(const std::filesystem::path& file, const std::vector<std::string>& names,
+                       const std::vector<const PsdCurve*>& curves);
 void writeSummary(const std::filesystem::path& file, double time, const FragmentAnalysis& analysis,
                   const FragmentSizeReport& report);
 

@@ -212,25 +212,6 @@ CellsPsd cellsPsd(const Application& app, double css)
     return r;
 }
 
-// psd.dat: the discharge's and the cells' mass passing at the sizes of either.
-void writePsdTable(const fs::path& file, const PsdCurve& discharge, const PsdCurve& cells)
-{
-    std::vector<double> sizes = discharge.size;
-    sizes.insert(sizes.end(), cells.size.begin(), cells.size.end());
-    std::sort(sizes.begin(), sizes.end());
-    sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
-    writeFileAtomically(file, [&](std::ostream& o) {
-        o << "# size [m]\tpassingDischarge [-]\tpassingCells [-]\n";
-        char b[96];
-        for (double x : sizes) {
-            std::snprintf(b, sizeof(b), "%.10g\t%.10g\t%.10g\n", x,
-                          discharge.empty() ? 0.0 : passingAt(discharge, x),
-                          cells.empty() ? 0.0 : passingAt(cells, x));
-            o << b;
-        }
-    });
-}
-
 // psd.png: the discharge PSD and the cells' PSD, the CSS marked.
 void plotPsd(const fs::path& png, const PsdCurve& discharge, const PsdCurve& cells, double css)
 {
@@ -317,7 +298,7 @@ int main(int argc, char** argv)
             fs::create_directories(dir);
             writeFileAtomically(dir / "summary.dat",
                                 [&](std::ostream& o) { o << text << perTonneKeys(figures) << cellKeys; });
-            writePsdTable(dir / "psd.dat", curve, cells.curve);
+            writePassingTable(dir / "psd.dat", {"passingDischarge", "passingCells"}, {&curve, &cells.curve});
         }
         std::printf("Steady window t >= %g s (%d rows of %zu)\n", steadyStart, P.n, t.size());
         std::printf("Power draw        %10.4g kW   (spread %.3g kW)\n", 1e-3 * P.mean, 1e-3 * P.spread);
